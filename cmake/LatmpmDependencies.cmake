@@ -1,0 +1,33 @@
+# All dependencies are Debian packages (scripts/install-deps.sh); nothing is vendored.
+# Facts: ../shared/DEBIAN-STACK.md.
+list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB /usr/lib/cmake/OpenVDB)
+
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(TBB REQUIRED)
+find_package(OpenVDB REQUIRED)            # find-module shipped by libopenvdb-dev
+find_package(HDF5 REQUIRED COMPONENTS C)  # needs the C language enabled
+find_package(CGAL REQUIRED)
+find_package(Threads REQUIRED)
+
+# gmsh ships no CMake package.
+find_library(GMSH_LIBRARY NAMES gmsh REQUIRED)
+find_path(GMSH_INCLUDE_DIR NAMES gmsh.h REQUIRED)
+if(NOT TARGET latmpm_gmsh)
+  add_library(latmpm_gmsh INTERFACE)
+  target_link_libraries(latmpm_gmsh INTERFACE ${GMSH_LIBRARY})
+  target_include_directories(latmpm_gmsh SYSTEM INTERFACE ${GMSH_INCLUDE_DIR})
+  add_library(latmpm::gmsh ALIAS latmpm_gmsh)
+endif()
+
+if(NOT TARGET latmpm_hdf5)
+  add_library(latmpm_hdf5 INTERFACE)
+  target_link_libraries(latmpm_hdf5 INTERFACE ${HDF5_C_LIBRARIES})
+  target_include_directories(latmpm_hdf5 SYSTEM INTERFACE ${HDF5_C_INCLUDE_DIRS})
+  target_compile_definitions(latmpm_hdf5 INTERFACE ${HDF5_C_DEFINITIONS})
+  add_library(latmpm::hdf5 ALIAS latmpm_hdf5)
+endif()
+
+if(LATMPM_BUILD_TESTS)
+  find_package(Catch2 2 REQUIRED)
+  include(Catch)  # catch_discover_tests
+endif()

@@ -1,0 +1,37 @@
+// Typed errors thrown by the libraries. Only a tool's main() catches them and maps each to
+// an exit status with one line (see core/tool_main.hpp):
+//   UsageError 1, InputError 2, NumericalError 3.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace latmpm {
+
+// The command line itself is malformed: unknown option, missing value.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Input that cannot be used: names where (file or option), which field, and what is wrong.
+struct InputError : std::runtime_error {
+  InputError(const std::string& where, const std::string& field, const std::string& problem)
+      : std::runtime_error(where + (field.empty() ? "" : ": " + field) + ": " + problem),
+        where_(where), field_(field), problem_(problem) {}
+  const std::string& where() const { return where_; }
+  const std::string& field() const { return field_; }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  std::string where_, field_, problem_;
+};
+
+// The computation went wrong (NaN, inverted element, unstable time step...): the message
+// names step, particle and position where known.
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown by the command-line parser after printing --help or --version: exit 0.
+struct HelpShown {};
+
+}  // namespace latmpm

@@ -1,0 +1,339 @@
+#include "core/hdf5_file.hpp"
+
+#include <hdf5.h>
+
+#include <utility>
+
+#include "core/errors.hpp"
+
+namespace latmpm {
+namespace {
+
+static_assert(sizeof(hid_t) == sizeof(int64_t), "hid_t is stored as int64_t");
+
+// HDF5 prints its own error stack by default; we report errors ourselves, once.
+struct SilenceHdf5 {
+  SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+const SilenceHdf5 silence_hdf5;
+
+struct Handle {  // closes an HDF5 object id with the right function
+  hid_t id;
+  herr_t (*closer)(hid_t);
+  Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), closer(c) {}
+  ~Handle() {
+    if (id >= 0) closer(id);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  bool ok() const { return id >= 0; }
+};
+
+std::string parent_of(const std::string& path) {
+  auto pos = path.find_last_of('/');
+  if (pos == std::string::npos || pos == 0) return "/";
+  return path.substr(0, pos);
+}
+
+bool link_exists(hid_t file, const std::string& path) {
+  if (path == "/" || path.empty()) return true;
+  // H5Lexists needs every intermediate link to exist: check from the root down.
+  size_t pos = 0;
+  while ((pos = path.find('/', pos + 1)) != std::string::npos) {
+    if (H5Lexists(file, path.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
+  }
+  return H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0;
+}
+
+}  // namespace
+
+Hdf5File::Hdf5File(const std::string& path, Mode mode) : path_(path) {
+  switch (mode) {
+    case Mode::create:
+      id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+      if (id_ < 0) fail("", "cannot create the file (is the directory writable?)");
+      break;
+    case Mode::read:
+    case Mode::read_write: {
+      if (H5Fis_hdf5(path.c_str()) <= 0) {
+        FILE* f = std::fopen(path.c_str(), "rb");
+        if (!f) fail("", "cannot open the file (missing or unreadable)");
+        std::fclose(f);
+        fail("", "not an HDF5 file");
+      }
+      id_ = H5Fopen(path.c_str(), mode == Mode::read ? H5F_ACC_RDONLY : H5F_ACC_RDWR, H5P_DEFAULT);
+      if (id_ < 0) fail("", "cannot open the HDF5 file");
+      break;
+    }
+  }
+}
+
+Hdf5File::~Hdf5File() { close(); }
+
+Hdf5File::Hdf5File(Hdf5File&& other) noexcept
+    : path_(std::move(other.path_)), id_(std::exchange(other.id_, -1)) {}
+
+Hdf5File& Hdf5File::operator=(Hdf5File&& other) noexcept {
+  if (this != &other) {
+    close();
+    path_ = std::move(other.path_);
+    id_ = std::exchange(other.id_, -1);
+  }
+  return *this;
+}
+
+void Hdf5File::close() {
+  if (id_ >= 0) {
+    H5Fflush(id_, H5F_SCOPE_LOCAL);
+    H5Fclose(id_);
+    id_ = -1;
+  }
+}
+
+void Hdf5File::fail(const std::string& field, const std::string& problem) const {
+  throw InputError(path_, field, problem);
+}
+
+bool Hdf5File::exists(const std::string& object) const { return link_exists(id_, object); }
+
+void Hdf5File::create_group(const std::string& group) {
+  if (exists(group)) return;
+  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+  H5Pset_create_intermediate_group(lcpl.id, 1);
+  Handle g(H5Gcreate2(id_, group.c_str(), lcpl.id, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!g.ok()) fail(group, "cannot create group");
+}
+
+template <typename T>
+void Hdf5File::write_numeric(const std::string& dataset, const std::vector<T>& data,
+                             const std::vector<size_t>& dims, int64_t mem_type) {
+  size_t count = 1;
+  std::vector<hsize_t> hdims(dims.begin(), dims.end());
+  for (size_t d : dims) count *= d;
+  if (count != data.size()) fail(dataset, "internal: shape does not match the data size");
+  create_group(parent_of(dataset));
+  if (exists(dataset)) H5Ldelete(id_, dataset.c_str(), H5P_DEFAULT);
+  Handle space(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr), H5Sclose);
+  Handle set(H5Dcreate2(id_, dataset.c_str(), mem_type, space.id, H5P_DEFAULT, H5P_DEFAULT,
+                        H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot create dataset");
+  if (count > 0 && H5Dwrite(set.id, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail(dataset, "write failed (disk full?)");
+}
+
+template <typename T>
+std::vector<T> Hdf5File::read_numeric(const std::string& dataset, std::vector<size_t>* dims,
+                                      int64_t mem_type) const {
+  if (!exists(dataset)) fail(dataset, "missing dataset");
+  Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot open dataset");
+  Handle type(H5Dget_type(set.id), H5Tclose);
+  H5T_class_t cls = H5Tget_class(type.id);
+  if (cls != H5T_INTEGER && cls != H5T_FLOAT) fail(dataset, "not a numeric dataset");
+  std::vector<size_t> shape_out = shape(dataset);
+  size_t count = 1;
+  for (size_t d : shape_out) count *= d;
+  std::vector<T> data(count);
+  if (count > 0 && H5Dread(set.id, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
+    fail(dataset, "read failed (truncated or corrupt file?)");
+  if (dims) *dims = shape_out;
+  return data;
+}
+
+std::vector<size_t> Hdf5File::shape(const std::string& dataset) const {
+  if (!exists(dataset)) fail(dataset, "missing dataset");
+  Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot open dataset");
+  Handle space(H5Dget_space(set.id), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(space.id);
+  if (rank < 0) fail(dataset, "cannot read the shape");
+  std::vector<hsize_t> hdims(static_cast<size_t>(rank));
+  H5Sget_simple_extent_dims(space.id, hdims.data(), nullptr);
+  return std::vector<size_t>(hdims.begin(), hdims.end());
+}
+
+void Hdf5File::write(const std::string& d, const std::vector<double>& v, const std::vector<size_t>& s) {
+  write_numeric(d, v, s, H5T_NATIVE_DOUBLE);
+}
+void Hdf5File::write(const std::string& d, const std::vector<float>& v, const std::vector<size_t>& s) {
+  write_numeric(d, v, s, H5T_NATIVE_FLOAT);
+}
+void Hdf5File::write(const std::string& d, const std::vector<int32_t>& v, const std::vector<size_t>& s) {
+  write_numeric(d, v, s, H5T_NATIVE_INT32);
+}
+void Hdf5File::write(const std::string& d, const std::vector<int64_t>& v, const std::vector<size_t>& s) {
+  write_numeric(d, v, s, H5T_NATIVE_INT64);
+}
+void Hdf5File::write(const std::string& d, const std::vector<uint8_t>& v, const std::vector<size_t>& s) {
+  write_numeric(d, v, s, H5T_NATIVE_UINT8);
+}
+std::vector<double> Hdf5File::read_doubles(const std::string& d, std::vector<size_t>* s) const {
+  return read_numeric<double>(d, s, H5T_NATIVE_DOUBLE);
+}
+std::vector<float> Hdf5File::read_floats(const std::string& d, std::vector<size_t>* s) const {
+  return read_numeric<float>(d, s, H5T_NATIVE_FLOAT);
+}
+std::vector<int32_t> Hdf5File::read_int32(const std::string& d, std::vector<size_t>* s) const {
+  return read_numeric<int32_t>(d, s, H5T_NATIVE_INT32);
+}
+std::vector<int64_t> Hdf5File::read_int64(const std::string& d, std::vector<size_t>* s) const {
+  return read_numeric<int64_t>(d, s, H5T_NATIVE_INT64);
+}
+std::vector<uint8_t> Hdf5File::read_uint8(const std::string& d, std::vector<size_t>* s) const {
+  return read_numeric<uint8_t>(d, s, H5T_NATIVE_UINT8);
+}
+
+void Hdf5File::write_strings(const std::string& dataset, const std::vector<std::string>& data) {
+  create_group(parent_of(dataset));
+  if (exists(dataset)) H5Ldelete(id_, dataset.c_str(), H5P_DEFAULT);
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.id, H5T_VARIABLE);
+  H5Tset_cset(type.id, H5T_CSET_UTF8);
+  hsize_t n = data.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  Handle set(H5Dcreate2(id_, dataset.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot create dataset");
+  std::vector<const char*> ptrs;
+  for (const auto& s : data) ptrs.push_back(s.c_str());
+  if (n > 0 && H5Dwrite(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    fail(dataset, "write failed");
+}
+
+std::vector<std::string> Hdf5File::read_strings(const std::string& dataset) const {
+  if (!exists(dataset)) fail(dataset, "missing dataset");
+  Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle ftype(H5Dget_type(set.id), H5Tclose);
+  if (H5Tget_class(ftype.id) != H5T_STRING || !H5Tis_variable_str(ftype.id))
+    fail(dataset, "not a variable-length string dataset");
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.id, H5T_VARIABLE);
+  H5Tset_cset(type.id, H5Tget_cset(ftype.id));
+  size_t n = shape(dataset).at(0);
+  std::vector<char*> ptrs(n, nullptr);
+  if (n > 0 && H5Dread(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    fail(dataset, "read failed");
+  std::vector<std::string> out;
+  for (char* p : ptrs) out.emplace_back(p ? p : "");
+  if (n > 0) {
+    Handle space(H5Dget_space(set.id), H5Sclose);
+    H5Dvlen_reclaim(type.id, space.id, H5P_DEFAULT, ptrs.data());
+  }
+  return out;
+}
+
+namespace {
+hid_t open_object(hid_t file, const std::string& object) {
+  return H5Oopen(file, object.c_str(), H5P_DEFAULT);
+}
+}  // namespace
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name,
+                             const std::string& value) {
+  Handle obj(open_object(id_, object), H5Oclose);
+  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
+  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.id, H5T_VARIABLE);
+  H5Tset_cset(type.id, H5T_CSET_UTF8);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(H5Acreate2(obj.id, name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  const char* p = value.c_str();
+  if (!attr.ok() || H5Awrite(attr.id, type.id, &p) < 0) fail(object, "cannot write attribute '" + name + "'");
+}
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name,
+                             const std::vector<double>& value) {
+  Handle obj(open_object(id_, object), H5Oclose);
+  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
+  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
+  hsize_t n = value.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, value.data()) < 0)
+    fail(object, "cannot write attribute '" + name + "'");
+}
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
+  Handle obj(open_object(id_, object), H5Oclose);
+  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
+  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &value) < 0)
+    fail(object, "cannot write attribute '" + name + "'");
+}
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name, int64_t value) {
+  Handle obj(open_object(id_, object), H5Oclose);
+  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
+  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_INT64, space.id, H5P_DEFAULT, H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_INT64, &value) < 0)
+    fail(object, "cannot write attribute '" + name + "'");
+}
+
+bool Hdf5File::has_attribute(const std::string& object, const std::string& name) const {
+  if (!exists(object)) return false;
+  Handle obj(open_object(id_, object), H5Oclose);
+  return obj.ok() && H5Aexists(obj.id, name.c_str()) > 0;
+}
+
+std::string Hdf5File::string_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) fail(object == "/" ? name : object + "@" + name, "missing attribute");
+  Handle obj(open_object(id_, object), H5Oclose);
+  Handle attr(H5Aopen(obj.id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  Handle ftype(H5Aget_type(attr.id), H5Tclose);
+  if (H5Tget_class(ftype.id) != H5T_STRING) fail(object + "@" + name, "not a string attribute");
+  if (H5Tis_variable_str(ftype.id)) {
+    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type.id, H5T_VARIABLE);
+    H5Tset_cset(type.id, H5Tget_cset(ftype.id));
+    char* p = nullptr;
+    if (H5Aread(attr.id, type.id, &p) < 0) fail(object + "@" + name, "read failed");
+    std::string out = p ? p : "";
+    H5free_memory(p);
+    return out;
+  }
+  size_t size = H5Tget_size(ftype.id);
+  std::string out(size, '\0');
+  if (H5Aread(attr.id, ftype.id, out.data()) < 0) fail(object + "@" + name, "read failed");
+  out.resize(out.find('\0') == std::string::npos ? size : out.find('\0'));
+  return out;
+}
+
+double Hdf5File::double_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) fail(object == "/" ? name : object + "@" + name, "missing attribute");
+  Handle obj(open_object(id_, object), H5Oclose);
+  Handle attr(H5Aopen(obj.id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  double v = 0;
+  if (H5Aread(attr.id, H5T_NATIVE_DOUBLE, &v) < 0) fail(object + "@" + name, "not a number");
+  return v;
+}
+
+int64_t Hdf5File::int_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) fail(object == "/" ? name : object + "@" + name, "missing attribute");
+  Handle obj(open_object(id_, object), H5Oclose);
+  Handle attr(H5Aopen(obj.id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  int64_t v = 0;
+  if (H5Aread(attr.id, H5T_NATIVE_INT64, &v) < 0) fail(object + "@" + name, "not an integer");
+  return v;
+}
+
+std::vector<double> Hdf5File::doubles_attribute(const std::string& object, const std::string& name) const {
+  if (!has_attribute(object, name)) fail(object == "/" ? name : object + "@" + name, "missing attribute");
+  Handle obj(open_object(id_, object), H5Oclose);
+  Handle attr(H5Aopen(obj.id, name.c_str(), H5P_DEFAULT), H5Aclose);
+  Handle space(H5Aget_space(attr.id), H5Sclose);
+  hssize_t n = H5Sget_simple_extent_npoints(space.id);
+  std::vector<double> v(static_cast<size_t>(n > 0 ? n : 0));
+  if (n > 0 && H5Aread(attr.id, H5T_NATIVE_DOUBLE, v.data()) < 0) fail(object + "@" + name, "not numbers");
+  return v;
+}
+
+}  // namespace latmpm

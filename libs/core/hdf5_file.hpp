@@ -1,0 +1,77 @@
+// A small RAII layer over the HDF5 C API: the one way latmpm files are read and written.
+// Datasets are addressed by path ("/points/position"); missing groups are created on write.
+// Every failure throws InputError naming the file and the dataset or attribute.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace latmpm {
+
+class Hdf5File {
+ public:
+  enum class Mode { read, read_write, create };
+  Hdf5File(const std::string& path, Mode mode);
+  ~Hdf5File();
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+  Hdf5File(Hdf5File&& other) noexcept;
+  Hdf5File& operator=(Hdf5File&& other) noexcept;
+
+  const std::string& path() const { return path_; }
+  bool exists(const std::string& object) const;  // group or dataset
+  void close();
+
+  // Datasets: `dims` is the shape, row-major (N×3 for positions). Overwrites an existing one.
+  void write(const std::string& dataset, const std::vector<double>& data,
+             const std::vector<size_t>& dims);
+  void write(const std::string& dataset, const std::vector<float>& data,
+             const std::vector<size_t>& dims);
+  void write(const std::string& dataset, const std::vector<int32_t>& data,
+             const std::vector<size_t>& dims);
+  void write(const std::string& dataset, const std::vector<int64_t>& data,
+             const std::vector<size_t>& dims);
+  void write(const std::string& dataset, const std::vector<uint8_t>& data,
+             const std::vector<size_t>& dims);
+  void write_strings(const std::string& dataset, const std::vector<std::string>& data);
+
+  // Reads convert from the stored numeric type. `dims`, when given, receives the shape.
+  std::vector<double> read_doubles(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
+  std::vector<float> read_floats(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
+  std::vector<int32_t> read_int32(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
+  std::vector<int64_t> read_int64(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
+  std::vector<uint8_t> read_uint8(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
+  std::vector<std::string> read_strings(const std::string& dataset) const;
+  std::vector<size_t> shape(const std::string& dataset) const;
+
+  // Attributes on a group or dataset ("/" for the file).
+  void set_attribute(const std::string& object, const std::string& name, const std::string& value);
+  void set_attribute(const std::string& object, const std::string& name, const char* value) {
+    set_attribute(object, name, std::string(value));
+  }
+  void set_attribute(const std::string& object, const std::string& name, double value);
+  void set_attribute(const std::string& object, const std::string& name, int64_t value);
+  void set_attribute(const std::string& object, const std::string& name,
+                     const std::vector<double>& value);
+  bool has_attribute(const std::string& object, const std::string& name) const;
+  std::string string_attribute(const std::string& object, const std::string& name) const;
+  double double_attribute(const std::string& object, const std::string& name) const;
+  int64_t int_attribute(const std::string& object, const std::string& name) const;
+  std::vector<double> doubles_attribute(const std::string& object, const std::string& name) const;
+
+  void create_group(const std::string& group);
+
+ private:
+  template <typename T>
+  void write_numeric(const std::string& dataset, const std::vector<T>& data,
+                     const std::vector<size_t>& dims, int64_t mem_type);
+  template <typename T>
+  std::vector<T> read_numeric(const std::string& dataset, std::vector<size_t>* dims,
+                              int64_t mem_type) const;
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
+
+  std::string path_;
+  int64_t id_ = -1;  // hid_t, kept as int64_t so the header stays free of hdf5.h
+};
+
+}  // namespace latmpm

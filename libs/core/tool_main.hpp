@@ -1,0 +1,16 @@
+// The one place errors become exit statuses. A tool's main() is
+//   int main(int argc, char** argv) { return latmpm::run_tool("latmpm-x", argc, argv, run); }
+// and prints exactly one line on failure:
+//   0 success (or --help), 1 usage, 2 bad input, 3 numerical failure, 4 internal error.
+#pragma once
+#include <functional>
+#include <string>
+
+namespace latmpm {
+
+enum ExitStatus { exit_ok = 0, exit_usage = 1, exit_bad_input = 2, exit_numerical = 3, exit_internal = 4 };
+
+int run_tool(const std::string& tool, int argc, char** argv,
+             const std::function<int(int, char**)>& body);
+
+}  // namespace latmpm
