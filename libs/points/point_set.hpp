@@ -1,0 +1,42 @@
+// Material points: what the voxelizer writes, the imperfection tool perturbs and the solver
+// reads. Structure of arrays, SI units. Layout on disk in docs/formats.md ("Point-set file").
+//
+// Grid alignment rule: the solver's background grid has nodes at x = i·h (integer i, the
+// global origin is a node) for the cell size h recorded here. The voxelizer places ppc³
+// points per cell at x = (i + (k + 1/2)/ppc)·h, k = 0..ppc-1, so points sit symmetrically
+// inside their cell for any solver run with the same h.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace latmpm {
+
+struct PointSet {
+  std::vector<Eigen::Vector3d> position;   // m
+  std::vector<double> volume;              // m³ (surface points carry their inside fraction)
+  std::vector<int32_t> body;               // index into body_names
+  std::vector<Eigen::Vector3d> half_size;  // m, GIMP particle-domain half-lengths
+  std::vector<std::string> body_names;     // "lattice", "bottom_plate", "top_plate", "column"...
+  // Regions scenes need, one 0/1 mask per point: "record" (bottom layer of the base, the
+  // paper's reaction measure), "top_layer", "bottom_layer"...
+  std::map<std::string, std::vector<uint8_t>> tags;
+  double cell_size = 0;  // m, the grid cell h the points were made for
+  int ppc = 0;           // points per cell per direction
+
+  size_t size() const { return position.size(); }
+  // Index of a body by name, or -1.
+  int body_index(const std::string& name) const;
+  // Throws InputError(where, field, problem) if arrays disagree in length, values are not
+  // finite, volumes are not positive, or body indices are out of range.
+  void validate(const std::string& where) const;
+};
+
+class Hdf5File;
+void write_point_set(Hdf5File& file, const PointSet& points);
+PointSet read_point_set(const Hdf5File& file);
+bool holds_point_set(const Hdf5File& file);
+
+}  // namespace latmpm
