@@ -23,6 +23,10 @@ struct PointSet {
   // Regions scenes need, one 0/1 mask per point: "record" (bottom layer of the base, the
   // paper's reaction measure), "top_layer", "bottom_layer"...
   std::map<std::string, std::vector<uint8_t>> tags;
+  // Parameters of the geometry the points came from, copied from the geometry file
+  // ("layer_height" -> "0.00933 m", "cells" -> "5x5x5"...): lets later tools find cell
+  // layers without the geometry file. Values carry units, parse with parse_quantity.
+  std::map<std::string, std::string> parameters;
   double cell_size = 0;  // m, the grid cell h the points were made for
   int ppc = 0;           // points per cell per direction
 

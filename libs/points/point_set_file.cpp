@@ -46,6 +46,13 @@ void write_point_set(Hdf5File& file, const PointSet& p) {
     file.write("/points/tags/" + name, mask, {mask.size()});
   }
   file.write_strings("/points/tag_names", tag_names);
+  std::vector<std::string> keys, values;
+  for (const auto& [k, v] : p.parameters) {
+    keys.push_back(k);
+    values.push_back(v);
+  }
+  file.write_strings("/points/parameters/keys", keys);
+  file.write_strings("/points/parameters/values", values);
 }
 
 PointSet read_point_set(const Hdf5File& file) {
@@ -60,6 +67,13 @@ PointSet read_point_set(const Hdf5File& file) {
   p.body_names = file.read_strings("/points/body_names");
   for (const auto& name : file.read_strings("/points/tag_names"))
     p.tags[name] = file.read_uint8("/points/tags/" + name);
+  if (file.exists("/points/parameters/keys")) {
+    auto keys = file.read_strings("/points/parameters/keys");
+    auto values = file.read_strings("/points/parameters/values");
+    if (keys.size() != values.size())
+      throw InputError(file.path(), "/points/parameters", "keys and values differ in length");
+    for (size_t i = 0; i < keys.size(); ++i) p.parameters[keys[i]] = values[i];
+  }
   p.validate(file.path());
   return p;
 }

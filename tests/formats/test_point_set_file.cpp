@@ -19,6 +19,7 @@ PointSet sample() {
   p.tags["record"] = {0, 1};
   p.cell_size = 0.00064;
   p.ppc = 2;
+  p.parameters = {{"layer_height", "0.00933 m"}};
   return p;
 }
 }  // namespace
@@ -40,6 +41,7 @@ TEST_CASE("A point set written to HDF5 reads back exactly", "[formats][points]")
   CHECK(back.tags == p.tags);
   CHECK(back.cell_size == p.cell_size);
   CHECK(back.ppc == p.ppc);
+  CHECK(back.parameters == p.parameters);
 }
 
 TEST_CASE("Invalid point sets are refused naming the field", "[formats][points]") {
