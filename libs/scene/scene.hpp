@@ -1,0 +1,92 @@
+// A simulation scene: what latmpm-solve runs. Read from TOML (docs/scene.md has the full
+// key reference); every dimensional value carries its unit in the file and is SI here.
+// Reading is separate from building the simulation (pbrt's Create(params) then construct):
+// this header knows nothing of the solver, so the scene can be parsed, checked and echoed
+// without one.
+#pragma once
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace latmpm {
+
+enum class BodyRole { deformable, fixed, driven };
+enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3 };
+enum class SchemeKind { usl, usf, musl };
+enum class MaterialModel { linear_elastic, neo_hookean };
+
+const char* to_string(BodyRole role);
+const char* to_string(ShapeKind shape);
+const char* to_string(SchemeKind scheme);
+const char* to_string(MaterialModel model);
+
+struct MaterialSpec {
+  MaterialModel model = MaterialModel::linear_elastic;
+  double youngs_modulus = 0;  // Pa
+  double poisson_ratio = 0;
+  double density = 0;  // kg/m³ as given; mass scaling is applied by the solver set-up
+};
+
+struct BodySpec {
+  std::string name;
+  BodyRole role = BodyRole::deformable;
+  bool has_material = false;  // deformable bodies always; fixed/driven optionally (mass only)
+  MaterialSpec material;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, driven bodies
+  std::string where;  // "scene.toml:14", for messages about this body
+};
+
+struct PointFileSpec {
+  std::string path;   // resolved against the scene file's directory
+  std::string where;  // location of its 'file' key
+};
+
+// How the run ends: at a simulated time or when the driven body has moved a distance.
+struct EndCondition {
+  enum Kind { time, plate_displacement } kind = time;
+  double value = 0;  // s or m
+  std::string where;
+};
+
+struct Scene {
+  std::string source;  // the scene file as named by the user
+  EndCondition end;
+  long max_steps = 0;  // 0: no limit
+
+  double cell_size = 0;  // m; 0 = take the point files' cell size
+  ShapeKind shape = ShapeKind::ugimp;
+  SchemeKind scheme = SchemeKind::usl;
+  double flip = 0.99;  // FLIP fraction of the velocity update (1 = pure FLIP, 0 = PIC)
+
+  double cfl = 0.3;      // used when dt == 0
+  double dt = 0;         // s, fixed step when > 0
+  double mass_scaling = 1;  // multiplies every deformable body's density (paper A Sec. 4: 6)
+
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
+
+  std::vector<PointFileSpec> point_files;
+  std::vector<BodySpec> bodies;  // in document order
+
+  long series_every = 100;    // steps between series rows
+  long snapshot_every = 0;    // steps between particle snapshots, 0 = first and last only
+  std::string record_tag = "record";  // point tag of the record layer (paper A Sec. 5.1)
+
+  // The scene as run: the document after --set overrides, with every default filled in
+  // and point-file paths made absolute. Written to RUN_DIR/scene.toml.
+  std::string resolved_toml;
+
+  const BodySpec* body(const std::string& name) const;
+  std::string where;  // "scene.toml", for messages about the scene as a whole
+};
+
+// Reads a scene file and applies "key.path=value" overrides (latmpm-solve --set).
+// Throws InputError "FILE:LINE: key.path: problem" (or "--set key=value: ...") for syntax
+// errors, unknown keys, missing keys, wrong types, values without or with the wrong unit.
+Scene read_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from text (tests); `name` stands for the file in messages, `directory` resolves
+// relative point-file paths.
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& directory,
+                  const std::vector<std::string>& overrides = {});
+
+}  // namespace latmpm

@@ -1,0 +1,80 @@
+#include "scene/scene_points.hpp"
+
+#include "core/errors.hpp"
+#include "core/hdf5_file.hpp"
+#include "core/provenance.hpp"
+
+namespace latmpm {
+namespace {
+
+// Appends `part` to `all`, renumbering its bodies into the scene's order.
+void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& body_map) {
+  const size_t before = all.size(), n = part.size();
+  all.position.insert(all.position.end(), part.position.begin(), part.position.end());
+  all.volume.insert(all.volume.end(), part.volume.begin(), part.volume.end());
+  all.half_size.insert(all.half_size.end(), part.half_size.begin(), part.half_size.end());
+  for (int32_t b : part.body) all.body.push_back(body_map[b]);
+  for (auto& [name, mask] : all.tags) mask.resize(before + n, 0);
+  for (const auto& [name, mask] : part.tags) {
+    auto& merged = all.tags[name];
+    merged.resize(before, 0);
+    merged.insert(merged.end(), mask.begin(), mask.end());
+  }
+  for (const auto& [key, value] : part.parameters) all.parameters.emplace(key, value);
+}
+
+std::string list(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
+  PointSet all;
+  for (const auto& body : scene.bodies) all.body_names.push_back(body.name);
+  std::vector<bool> has_points(scene.bodies.size(), false);
+  std::vector<std::string> names_in_files;
+
+  for (size_t f = 0; f < scene.point_files.size(); ++f) {
+    const PointFileSpec& spec = scene.point_files[f];
+    const std::string field = "points." + std::to_string(f) + ".file";
+    Hdf5File file(spec.path, Hdf5File::Mode::read);
+    if (!holds_point_set(file))
+      throw InputError(spec.where, field, "'" + spec.path + "' is not a point-set file (latmpm-voxelize writes them)");
+    PointSet part = read_point_set(file);
+    part.validate(spec.path);
+    if (provenance) {
+      provenance->inputs.push_back(spec.path);
+      provenance->inherit_from(file);
+    }
+    std::vector<size_t> count(part.body_names.size(), 0);
+    for (int32_t b : part.body) ++count[b];
+    std::vector<int32_t> body_map(part.body_names.size(), -1);
+    for (size_t b = 0; b < part.body_names.size(); ++b) {
+      const std::string& name = part.body_names[b];
+      names_in_files.push_back(name);
+      int index = all.body_index(name);
+      if (index < 0 && count[b] > 0)
+        throw InputError(spec.where, field,
+                         "'" + spec.path + "' holds body '" + name + "' (" + std::to_string(count[b]) +
+                             " points) which the scene does not describe; add [bodies." + name + "]");
+      body_map[b] = index;
+      if (index >= 0 && count[b] > 0) has_points[index] = true;
+    }
+    if (f == 0) {
+      all.cell_size = part.cell_size;
+      all.ppc = part.ppc;
+    }
+    append(all, part, body_map);
+  }
+  for (size_t b = 0; b < scene.bodies.size(); ++b)
+    if (!has_points[b])
+      throw InputError(scene.bodies[b].where, "bodies." + scene.bodies[b].name,
+                       "no point file holds a body named '" + scene.bodies[b].name +
+                           "' (the files hold: " + list(names_in_files) + ")");
+  return all;
+}
+
+}  // namespace latmpm

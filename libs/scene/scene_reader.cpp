@@ -1,0 +1,236 @@
+// The scene schema: which keys each table holds, their units, defaults and ranges.
+// docs/scene.md is the reference for users; keep the two in step.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene.hpp"
+#include "scene/toml_table_reader.hpp"
+
+namespace latmpm {
+namespace {
+
+using scene_toml::Origins;
+using scene_toml::TableReader;
+namespace fs = std::filesystem;
+
+template <typename Enum, size_t N>
+Enum enum_from(const std::string& name, const Enum (&values)[N]) {
+  for (Enum v : values)
+    if (name == to_string(v)) return v;
+  return values[0];
+}
+template <typename Enum, size_t N>
+std::vector<std::string> names_of(const Enum (&values)[N]) {
+  std::vector<std::string> names;
+  for (Enum v : values) names.emplace_back(to_string(v));
+  return names;
+}
+
+constexpr BodyRole all_roles[] = {BodyRole::deformable, BodyRole::fixed, BodyRole::driven};
+constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKind::cpgimp,
+                                    ShapeKind::bspline2, ShapeKind::bspline3};
+constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
+constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean};
+
+void read_run(TableReader run, Scene& s) {
+  TableReader end = run.table("end");
+  const bool by_time = end.has("time"), by_displacement = end.has("plate_displacement");
+  if (by_time == by_displacement)
+    run.fail("end", "give exactly one of { time = \"...\" } or { plate_displacement = \"...\" }");
+  s.end.kind = by_time ? EndCondition::time : EndCondition::plate_displacement;
+  s.end.value = by_time ? end.quantity("time", dimension::time)
+                        : end.quantity("plate_displacement", dimension::length);
+  s.end.where = end.where(by_time ? "time" : "plate_displacement");
+  if (!(s.end.value > 0)) end.fail(by_time ? "time" : "plate_displacement", "must be positive");
+  end.finish();
+  s.max_steps = run.integer("max_steps", 0);
+  if (s.max_steps < 0) run.fail("max_steps", "must be 0 (no limit) or positive");
+  run.finish();
+}
+
+void read_grid(TableReader grid, Scene& s) {
+  s.cell_size = grid.quantity("cell", dimension::length);
+  if (!(s.cell_size > 0)) grid.fail("cell", "must be positive");
+  s.shape = enum_from(grid.choice("shape", names_of(all_shapes), "ugimp"), all_shapes);
+  s.scheme = enum_from(grid.choice("scheme", names_of(all_schemes), "usl"), all_schemes);
+  s.flip = grid.number("flip", 0.99);
+  if (s.flip < 0 || s.flip > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+  grid.finish();
+}
+
+void read_time(TableReader time_table, Scene& s) {
+  TableReader* time = &time_table;
+  if (time->has("dt") && time->has("cfl"))
+    time->fail("dt", "give either dt (a fixed step) or cfl (a step from the wave speed), not both");
+  if (time->has("dt")) {
+    s.dt = time->quantity("dt", dimension::time);
+    if (!(s.dt > 0)) time->fail("dt", "must be positive");
+  } else {
+    s.cfl = time->number("cfl", 0.3);
+    if (!(s.cfl > 0) || s.cfl > 1) time->fail("cfl", "must lie in (0, 1]");
+  }
+  s.mass_scaling = time->number("mass_scaling", 1.0);
+  if (!(s.mass_scaling > 0)) time->fail("mass_scaling", "must be positive");
+  time->finish();
+}
+
+void read_gravity(TableReader gravity, Scene& s) {
+  s.gravity = gravity.vector("g", dimension::acceleration, "0m/s^2");
+  gravity.finish();
+}
+
+void read_points(std::vector<TableReader> files, const std::string& directory, Scene& s) {
+  for (TableReader& f : files) {
+    std::string file = f.text("file");
+    fs::path p(file);
+    if (p.is_relative()) p = fs::path(directory) / p;
+    p = fs::absolute(p).lexically_normal();
+    if (!fs::is_regular_file(p)) f.fail("file", "cannot find point file '" + p.string() + "'");
+    f.replace_text("file", p.string());
+    s.point_files.push_back({p.string(), f.where("file")});
+    f.finish();
+  }
+  if (s.point_files.empty()) throw InputError(s.where, "points", "the scene names no point file ([[points]] file = \"...\")");
+}
+
+MaterialSpec read_material(TableReader m) {
+  MaterialSpec spec;
+  spec.model = enum_from(m.choice("model", names_of(all_models), "linear_elastic"), all_models);
+  spec.youngs_modulus = m.quantity("E", dimension::pressure);
+  if (!(spec.youngs_modulus > 0)) m.fail("E", "must be positive");
+  spec.poisson_ratio = m.number("nu");
+  if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5)) m.fail("nu", "must lie in (-1, 0.5)");
+  spec.density = m.quantity("density", dimension::density);
+  if (!(spec.density > 0)) m.fail("density", "must be positive");
+  m.finish();
+  return spec;
+}
+
+void read_bodies(TableReader bodies, Scene& s) {
+  for (const std::string& name : bodies.keys()) {
+    TableReader b = bodies.table(name);
+    BodySpec body;
+    body.name = name;
+    body.where = b.where("role");
+    body.role = enum_from(b.choice("role", names_of(all_roles), ""), all_roles);
+    if (body.role == BodyRole::deformable || b.has("material")) {
+      body.material = read_material(b.table("material"));
+      body.has_material = true;
+    }
+    if (body.role == BodyRole::driven) {
+      body.velocity = b.vector("velocity", dimension::velocity);
+      if (body.velocity.norm() == 0) b.fail("velocity", "a driven body needs a non-zero velocity");
+    } else if (b.has("velocity")) {
+      b.fail("velocity", std::string("only driven bodies take a velocity (this one is ") +
+                             to_string(body.role) + ")");
+    }
+    b.finish();
+    s.bodies.push_back(body);
+  }
+  bodies.finish();
+}
+
+void read_output(TableReader output, Scene& s) {
+  TableReader* out = &output;
+  s.series_every = out->integer("series_every", 100);
+  if (s.series_every < 1) out->fail("series_every", "must be at least 1 (steps between rows)");
+  s.snapshot_every = out->integer("snapshot_every", 0);
+  if (s.snapshot_every < 0) out->fail("snapshot_every", "must be 0 (first and last only) or positive");
+  s.record_tag = out->text("record_tag", "record");
+  out->finish();
+}
+
+// Cross-section checks: what one table alone cannot know.
+void check_consistency(const Scene& s) {
+  int driven = 0;
+  for (const auto& b : s.bodies) driven += b.role == BodyRole::driven;
+  if (s.end.kind == EndCondition::plate_displacement && driven != 1)
+    throw InputError(s.end.where, "run.end.plate_displacement",
+                     "needs exactly one driven body, the scene has " + std::to_string(driven));
+}
+
+}  // namespace
+
+const char* to_string(BodyRole role) {
+  switch (role) {
+    case BodyRole::deformable: return "deformable";
+    case BodyRole::fixed: return "fixed";
+    case BodyRole::driven: return "driven";
+  }
+  return "?";
+}
+const char* to_string(ShapeKind shape) {
+  switch (shape) {
+    case ShapeKind::linear: return "linear";
+    case ShapeKind::ugimp: return "ugimp";
+    case ShapeKind::cpgimp: return "cpgimp";
+    case ShapeKind::bspline2: return "bspline2";
+    case ShapeKind::bspline3: return "bspline3";
+  }
+  return "?";
+}
+const char* to_string(SchemeKind scheme) {
+  switch (scheme) {
+    case SchemeKind::usl: return "usl";
+    case SchemeKind::usf: return "usf";
+    case SchemeKind::musl: return "musl";
+  }
+  return "?";
+}
+const char* to_string(MaterialModel model) {
+  switch (model) {
+    case MaterialModel::linear_elastic: return "linear_elastic";
+    case MaterialModel::neo_hookean: return "neo_hookean";
+  }
+  return "?";
+}
+
+const BodySpec* Scene::body(const std::string& name) const {
+  for (const auto& b : bodies)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& directory,
+                  const std::vector<std::string>& overrides) {
+  toml::table document;
+  try {
+    document = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw InputError(name + ":" + std::to_string(e.source().begin.line), "",
+                     "not valid TOML: " + std::string(e.description()));
+  }
+  Origins origins(name);
+  for (const auto& o : overrides) scene_toml::apply_override(document, o, origins);
+
+  Scene s;
+  s.source = s.where = name;
+  TableReader root(document, "", origins);
+  read_run(root.table("run"), s);
+  read_grid(root.table("grid"), s);
+  read_time(root.table_or_empty("time"), s);
+  read_gravity(root.table_or_empty("gravity"), s);
+  read_points(root.tables("points"), directory, s);
+  read_bodies(root.table("bodies"), s);
+  if (s.bodies.empty()) root.fail("bodies", "the scene describes no body ([bodies.<name>] tables)");
+  read_output(root.table_or_empty("output"), s);
+  root.finish();
+  check_consistency(s);
+
+  std::ostringstream os;
+  os << toml::toml_formatter(document) << "\n";
+  s.resolved_toml = os.str();
+  return s;
+}
+
+Scene read_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot read the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  fs::path dir = fs::path(path).parent_path();
+  return parse_scene(text.str(), path, dir.empty() ? "." : dir.string(), overrides);
+}
+
+}  // namespace latmpm

@@ -1,0 +1,206 @@
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "core/errors.hpp"
+#include "core/hdf5_file.hpp"
+#include "points/point_set.hpp"
+#include "scene/scene.hpp"
+
+using namespace latmpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A scratch directory holding one (empty-bodied) point file the scenes can name.
+std::string scratch_dir() {
+  static const std::string dir = [] {
+    fs::path d = fs::temp_directory_path() / ("latmpm-scene-test-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    PointSet p;
+    p.position = {{0, 0, 0}};
+    p.volume = {1e-9};
+    p.body = {0};
+    p.half_size = {{5e-4, 5e-4, 5e-4}};
+    p.body_names = {"column"};
+    p.cell_size = 1e-3;
+    p.ppc = 1;
+    Hdf5File f((d / "pts.h5").string(), Hdf5File::Mode::create);
+    write_point_set(f, p);
+    return d.string();
+  }();
+  return dir;
+}
+
+// The scene every test starts from; line numbers below refer to it.
+const std::string base_scene =
+    "[run]\n"                                                             // 1
+    "end = { plate_displacement = \"2mm\" }\n"                            // 2
+    "[grid]\n"                                                            // 3
+    "cell = \"0.4mm\"\n"                                                  // 4
+    "shape = \"linear\"\n"                                                // 5
+    "[time]\n"                                                            // 6
+    "cfl = 0.25\n"                                                        // 7
+    "mass_scaling = 6\n"                                                  // 8
+    "[[points]]\n"                                                        // 9
+    "file = \"pts.h5\"\n"                                                 // 10
+    "[bodies.column]\n"                                                   // 11
+    "role = \"deformable\"\n"                                             // 12
+    "material = { E = \"10MPa\", nu = 0.4, density = \"1.05g/cm^3\" }\n"  // 13
+    "[bodies.top]\n"                                                      // 14
+    "role = \"driven\"\n"                                                 // 15
+    "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\n"                   // 16
+    "[output]\n"                                                          // 17
+    "series_every = 10\n";                                                // 18
+
+Scene parse(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  return parse_scene(text, "scene.toml", scratch_dir(), overrides);
+}
+
+// Replaces the whole line `line` (1-based) of the base scene.
+std::string with_line(int line, const std::string& replacement) {
+  std::istringstream in(base_scene);
+  std::string out, l;
+  for (int i = 1; std::getline(in, l); ++i) out += (i == line ? replacement : l) + "\n";
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("A scene's quantities arrive in SI units", "[scene]") {
+  Scene s = parse(base_scene);
+  CHECK(s.end.kind == EndCondition::plate_displacement);
+  CHECK(s.end.value == Approx(2e-3));
+  CHECK(s.cell_size == Approx(4e-4));
+  CHECK(s.shape == ShapeKind::linear);
+  CHECK(s.cfl == 0.25);
+  CHECK(s.dt == 0);
+  CHECK(s.mass_scaling == 6);
+  REQUIRE(s.bodies.size() == 2);
+  CHECK(s.bodies[0].name == "column");  // document order, not alphabetical
+  CHECK(s.bodies[0].role == BodyRole::deformable);
+  CHECK(s.bodies[0].material.youngs_modulus == Approx(1e7));
+  CHECK(s.bodies[0].material.poisson_ratio == 0.4);
+  CHECK(s.bodies[0].material.density == Approx(1050));
+  CHECK(s.bodies[1].role == BodyRole::driven);
+  CHECK_FALSE(s.bodies[1].has_material);
+  CHECK(s.bodies[1].velocity.isApprox(Eigen::Vector3d(0, 0, -0.1)));
+  CHECK(s.point_files.at(0).path == (fs::path(scratch_dir()) / "pts.h5").string());
+  CHECK(s.series_every == 10);
+}
+
+TEST_CASE("Defaults are documented in the resolved scene, which reads back to the same scene", "[scene]") {
+  Scene s = parse(base_scene);
+  CHECK(s.scheme == SchemeKind::usl);
+  CHECK(s.flip == 0.99);
+  CHECK(s.gravity.isZero());
+  CHECK(s.snapshot_every == 0);
+  CHECK(s.record_tag == "record");
+  CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'usl'") || Catch::Contains("scheme = \"usl\""));
+  CHECK_THAT(s.resolved_toml, Catch::Contains("record_tag"));
+
+  // The resolved text is a complete scene: read from anywhere it gives the same values.
+  Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
+  CHECK(again.resolved_toml == s.resolved_toml);
+  CHECK(again.point_files.at(0).path == s.point_files.at(0).path);
+  CHECK(again.cell_size == s.cell_size);
+  CHECK(again.bodies[1].velocity == s.bodies[1].velocity);
+  CHECK(again.mass_scaling == s.mass_scaling);
+}
+
+TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
+  struct Case {
+    int line;
+    std::string replacement, location, key, problem;
+  };
+  auto c = GENERATE(values<Case>({
+      {13, "material = { E = \"10\", nu = 0.4, density = \"1050kg/m^3\" }", "scene.toml:13",
+       "bodies.column.material.E", "has no unit"},
+      {13, "material = { E = 10, nu = 0.4, density = \"1050kg/m^3\" }", "scene.toml:13",
+       "bodies.column.material.E", "has no unit"},
+      {13, "material = { E = \"10mm\", nu = 0.4, density = \"1050kg/m^3\" }", "scene.toml:13",
+       "bodies.column.material.E", "expected a"},
+      {13, "material = { E = \"10MPa\", nu = 0.4, densty = \"1050kg/m^3\" }", "scene.toml:13",
+       "bodies.column.material.densty", "unknown key"},
+      {7, "cfll = 0.3", "scene.toml:7", "time.cfll", "unknown key"},
+      {5, "shape = \"quadratic\"", "scene.toml:5", "grid.shape", "not one of"},
+      {4, "cel = \"0.4mm\"", "scene.toml:4", "grid.cel", "unknown key"},
+      {12, "role = \"fixed\"\nvelocity = [\"1m/s\", \"0m/s\", \"0m/s\"]", "scene.toml:13",
+       "bodies.column.velocity", "only driven bodies"},
+      {12, "", "scene.toml:11", "bodies.column.role", "missing"},
+      {16, "velocity = [\"0mm/s\", \"-100mm/s\"]", "scene.toml:16", "bodies.top.velocity",
+       "three components"},
+      {2, "end = { time = \"1s\", plate_displacement = \"2mm\" }", "scene.toml:2", "run.end",
+       "exactly one"},
+      {7, "dt = \"1us\"\ncfl = 0.3", "scene.toml:7", "time.dt", "not both"},
+      {18, "series_every = 0", "scene.toml:18", "output.series_every", "at least 1"},
+      {10, "file = \"missing.h5\"", "scene.toml:10", "points.0.file", "cannot find"},
+      {18, "series_every = 10\n[bodies.top2]\nrole = \"driven\"\nvelocity = [\"1m/s\", \"0m/s\", \"0m/s\"]",
+       "scene.toml:2", "run.end.plate_displacement", "exactly one driven"},
+      {8, "mass_scaling = [6]", "scene.toml:8", "time.mass_scaling", "found an array"},
+      {16, "velocity = [\"0mm/s\", \"0mm/s\" \"-1m/s\"]", "scene.toml:16", "", "not valid TOML"},
+  }));
+  CAPTURE(c.replacement);
+  try {
+    parse(with_line(c.line, c.replacement));
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.where() == c.location);
+    CHECK(e.field() == c.key);
+    CHECK_THAT(e.problem(), Catch::Contains(c.problem));
+  }
+}
+
+TEST_CASE("--set overrides any field, parsing the value as TOML or else as text", "[scene]") {
+  Scene s = parse(base_scene, {"grid.cell=0.2mm", "time.mass_scaling=1", "grid.scheme=musl",
+                               "bodies.top.velocity=[\"0m/s\",\"0m/s\",\"-0.05m/s\"]",
+                               "run.end={ time = \"3ms\" }", "output.snapshot_every=5"});
+  CHECK(s.cell_size == Approx(2e-4));
+  CHECK(s.mass_scaling == 1);
+  CHECK(s.scheme == SchemeKind::musl);
+  CHECK(s.bodies[1].velocity.z() == Approx(-0.05));
+  CHECK(s.end.kind == EndCondition::time);
+  CHECK(s.end.value == Approx(3e-3));
+  CHECK(s.snapshot_every == 5);
+  CHECK_THAT(s.resolved_toml, Catch::Contains("0.2mm"));
+
+  // Arrays are indexed by number, as in points.0.file.
+  Scene p = parse(base_scene, {"points.0.file=" + scratch_dir() + "/pts.h5"});
+  CHECK(p.point_files.size() == 1);
+}
+
+TEST_CASE("Errors in overridden values name the --set option", "[scene]") {
+  auto [assignment, key, problem] = GENERATE(table<std::string, std::string, std::string>({
+      {"grid.cell=0.4", "grid.cell", "has no unit"},
+      {"grid.cellsize=0.4mm", "grid.cellsize", "unknown key"},
+      {"bodies.column.material.nu=0.7", "bodies.column.material.nu", "(-1, 0.5)"},
+      {"points.3.file=x.h5", "points.3.file", "past the end"},
+      {"grid.cell.x=1", "grid.cell.x", "not a table"},
+      {"novalue", "", "key=value"},
+  }));
+  try {
+    parse(base_scene, {assignment});
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.where() == "--set " + assignment);
+    CHECK(e.field() == key);
+    CHECK_THAT(e.problem(), Catch::Contains(problem));
+  }
+}
+
+TEST_CASE("Relative point files resolve against the scene file's directory", "[scene]") {
+  const fs::path scene_path = fs::path(scratch_dir()) / "s.toml";
+  std::ofstream(scene_path) << base_scene;
+  const fs::path cwd = fs::current_path();
+  fs::current_path(fs::temp_directory_path());  // not the scene's directory
+  Scene s = read_scene(scene_path.string());
+  fs::current_path(cwd);
+  CHECK(s.point_files.at(0).path == (fs::path(scratch_dir()) / "pts.h5").string());
+  CHECK(s.source == scene_path.string());
+  CHECK_THROWS_WITH(read_scene((fs::path(scratch_dir()) / "none.toml").string()),
+                    Catch::Contains("none.toml") && Catch::Contains("cannot read"));
+}
