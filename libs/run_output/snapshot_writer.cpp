@@ -1,0 +1,89 @@
+#include "run_output/snapshot_writer.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.hpp"
+#include "core/file_transfer.hpp"
+#include "core/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace latmpm {
+
+void ParticleSnapshot::resize(size_t n) {
+  position.resize(3 * n);
+  velocity.resize(3 * n);
+  stress.resize(6 * n);
+  von_mises.resize(n);
+  jacobian.resize(n);
+  body.resize(n);
+}
+
+SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance)
+    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)) {
+  const fs::path dir = fs::path(run_dir_) / "snapshots";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string(), "", "cannot create the snapshot directory: " + ec.message());
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("snap_", 0) == 0 && entry.path().extension() == ".h5") fs::remove(entry.path());
+  }
+  fs::remove(xdmf_path(), ec);
+}
+
+std::string SnapshotWriter::write(const ParticleSnapshot& s) {
+  char name[32];
+  std::snprintf(name, sizeof name, "snap_%06lld.h5", static_cast<long long>(s.step));
+  const std::string relative = std::string("snapshots/") + name;
+  const std::string path = run_dir_ + "/" + relative;
+  const size_t n = s.size();
+  {
+    OutputFile out(path, path);
+    {
+      Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
+      write_provenance(file, provenance_);
+      file.write("/particles/position", s.position, {n, 3});
+      file.write("/particles/velocity", s.velocity, {n, 3});
+      file.write("/particles/stress", s.stress, {n, 6});
+      file.write("/particles/von_mises", s.von_mises, {n});
+      file.write("/particles/J", s.jacobian, {n});
+      file.write("/particles/body", s.body, {n});
+      file.write_strings("/particles/body_names", s.body_names);
+      file.set_attribute("/particles", "time", s.time);
+      file.set_attribute("/particles", "step", int64_t(s.step));
+      file.set_attribute("/particles/stress", "components", "xx xy xz yy yz zz");
+    }
+    out.commit();
+  }
+  if (!frames_.empty() && frames_.back().step == s.step) frames_.pop_back();
+  frames_.push_back({relative, s.time, s.step, n});
+
+  OutputFile xmf(xdmf_path(), xdmf_path());
+  {
+    std::ofstream text(xmf.temp_path(), std::ios::trunc);
+    text << xdmf_time_series(frames_);
+    if (!text.flush()) throw InputError(xdmf_path(), "", "cannot write (disk full?)");
+  }
+  xmf.commit();
+  return path;
+}
+
+ParticleSnapshot read_snapshot(const std::string& path) {
+  Hdf5File file(path, Hdf5File::Mode::read);
+  ParticleSnapshot s;
+  s.position = file.read_doubles("/particles/position");
+  s.velocity = file.read_floats("/particles/velocity");
+  s.stress = file.read_floats("/particles/stress");
+  s.von_mises = file.read_floats("/particles/von_mises");
+  s.jacobian = file.read_floats("/particles/J");
+  s.body = file.read_int32("/particles/body");
+  s.body_names = file.read_strings("/particles/body_names");
+  s.time = file.double_attribute("/particles", "time");
+  s.step = file.int_attribute("/particles", "step");
+  return s;
+}
+
+}  // namespace latmpm

@@ -1,0 +1,34 @@
+// Particle snapshots of a run: RUN_DIR/snapshots/snap_<step>.h5 (one HDF5 file each, with
+// provenance) and RUN_DIR/snapshots.xmf, the XDMF time series ParaView opens. Each snapshot
+// file is written under a temporary name and renamed, and the .xmf is rewritten the same way
+// after it, so a run stopped at any moment leaves only whole snapshots, all listed.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/provenance.hpp"
+#include "run_output/particle_snapshot.hpp"
+#include "run_output/xdmf_time_series.hpp"
+
+namespace latmpm {
+
+class SnapshotWriter {
+ public:
+  // Creates RUN_DIR/snapshots/ and removes snap_*.h5 left there by an earlier run.
+  SnapshotWriter(std::string run_dir, Provenance provenance);
+  // Writes the snapshot and returns its path. A second snapshot of the same step replaces
+  // the first (e.g. the final state when the last regular snapshot fell on the last step).
+  std::string write(const ParticleSnapshot& snapshot);
+  const std::vector<XdmfFrame>& frames() const { return frames_; }
+  std::string xdmf_path() const { return run_dir_ + "/snapshots.xmf"; }
+
+ private:
+  std::string run_dir_;
+  Provenance provenance_;
+  std::vector<XdmfFrame> frames_;
+};
+
+// Reads a snapshot back (tests, post-processing).
+ParticleSnapshot read_snapshot(const std::string& path);
+
+}  // namespace latmpm

@@ -1,0 +1,115 @@
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/hdf5_file.hpp"
+#include "core/provenance.hpp"
+#include "run_output/snapshot_writer.hpp"
+
+using namespace latmpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fresh_run_dir(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("latmpm-snapshots-" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d.string();
+}
+
+ParticleSnapshot make_snapshot(size_t n, int64_t step, double time) {
+  ParticleSnapshot s;
+  s.step = step;
+  s.time = time;
+  s.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      s.position[3 * i + k] = 1e-3 * double(i) + 1e-9 * k + 1e-6 * step;
+      s.velocity[3 * i + k] = float(k - 1);
+    }
+    for (int k = 0; k < 6; ++k) s.stress[6 * i + k] = float(1000 * k + i);
+    s.von_mises[i] = float(i);
+    s.jacobian[i] = 1.0f;
+    s.body[i] = int32_t(i % 2);
+  }
+  s.body_names = {"column", "top_plate"};
+  return s;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("A snapshot reads back as written, with provenance", "[run_output]") {
+  const std::string dir = fresh_run_dir("roundtrip");
+  SnapshotWriter writer(dir, Provenance{"latmpm-solve", "0", "cmd", {}, "t", {}});
+  ParticleSnapshot s = make_snapshot(5, 40, 2.5e-3);
+  const std::string path = writer.write(s);
+  CHECK(path == dir + "/snapshots/snap_000040.h5");
+  ParticleSnapshot back = read_snapshot(path);
+  CHECK(back.position == s.position);
+  CHECK(back.velocity == s.velocity);
+  CHECK(back.stress == s.stress);
+  CHECK(back.von_mises == s.von_mises);
+  CHECK(back.jacobian == s.jacobian);
+  CHECK(back.body == s.body);
+  CHECK(back.body_names == s.body_names);
+  CHECK(back.step == 40);
+  CHECK(back.time == 2.5e-3);
+  CHECK(read_provenance(Hdf5File(path, Hdf5File::Mode::read)).tool == "latmpm-solve");
+}
+
+TEST_CASE("The XDMF series lists every snapshot in order and its data items match the files", "[run_output]") {
+  const std::string dir = fresh_run_dir("xdmf");
+  SnapshotWriter writer(dir, Provenance{});
+  writer.write(make_snapshot(7, 0, 0));
+  writer.write(make_snapshot(7, 10, 1e-3));
+  writer.write(make_snapshot(7, 20, 2e-3));
+  writer.write(make_snapshot(7, 20, 2e-3));  // the same step again replaces, not appends
+  const std::string xmf = read_text(writer.xdmf_path());
+
+  std::regex time_re("<Time Value=\"([^\"]+)\"/>");
+  std::vector<double> times;
+  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), time_re); it != std::sregex_iterator(); ++it)
+    times.push_back(std::stod((*it)[1]));
+  CHECK(times == std::vector<double>{0, 1e-3, 2e-3});
+
+  // Every DataItem names an existing file and dataset whose shape is the declared one.
+  std::regex item_re("Dimensions=\"([0-9 ]+)\"[^>]*>([^:<]+):([^<]+)</DataItem>");
+  int items = 0;
+  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), item_re); it != std::sregex_iterator(); ++it) {
+    const std::string file = dir + "/" + (*it)[2].str(), dataset = (*it)[3];
+    REQUIRE(fs::exists(file));
+    std::vector<size_t> declared;
+    std::istringstream ds((*it)[1].str());
+    for (size_t d; ds >> d;) declared.push_back(d);
+    CHECK(Hdf5File(file, Hdf5File::Mode::read).shape(dataset) == declared);
+    ++items;
+  }
+  CHECK(items == 3 * 6);  // geometry + 5 attributes per frame
+}
+
+TEST_CASE("A new run in the same directory starts from no snapshots", "[run_output]") {
+  const std::string dir = fresh_run_dir("rerun");
+  {
+    SnapshotWriter first(dir, Provenance{});
+    first.write(make_snapshot(3, 0, 0));
+    first.write(make_snapshot(3, 500, 1));
+  }
+  std::ofstream(dir + "/snapshots/notes.txt") << "keep me";
+  SnapshotWriter second(dir, Provenance{});
+  CHECK_FALSE(fs::exists(dir + "/snapshots/snap_000500.h5"));
+  CHECK_FALSE(fs::exists(second.xdmf_path()));
+  CHECK(fs::exists(dir + "/snapshots/notes.txt"));
+}
