@@ -24,6 +24,10 @@ void CommandLine::repeated_option(const std::string& name, const std::string& me
 void CommandLine::flag(const std::string& name, const std::string& help) {
   declared_.push_back({name, "", help, "", Declared::boolean, false});
 }
+void CommandLine::alias(char letter, const std::string& name) {
+  if (!find(name)) throw std::logic_error("alias for option '" + name + "' that was never declared");
+  aliases_[letter] = name;
+}
 void CommandLine::positional(const std::string& name, const std::string& help, bool required) {
   declared_.push_back({name, "", help, "", Declared::positional, required});
 }
@@ -51,6 +55,11 @@ void CommandLine::parse(int argc, const char* const* argv) {
     if (!options_done && arg == "--") {
       options_done = true;
       continue;
+    }
+    if (!options_done && arg.size() >= 2 && arg[0] == '-' && arg[1] != '-' &&
+        (arg.size() == 2 || arg[2] == '=')) {
+      auto a = aliases_.find(arg[1]);
+      if (a != aliases_.end()) arg = "--" + a->second + arg.substr(2);
     }
     if (!options_done && arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
       std::string name = arg.substr(2), value;
@@ -144,6 +153,8 @@ std::string CommandLine::help_text() const {
     std::string head = d.kind == Declared::positional ? "  " + d.name
                        : d.kind == Declared::boolean  ? "  --" + d.name
                                                       : "  --" + d.name + " " + d.metavar;
+    for (const auto& [letter, name] : aliases_)
+      if (name == d.name) head = "  -" + std::string(1, letter) + ", " + head.substr(2);
     os << head;
     if (head.size() < 30)
       os << std::string(30 - head.size(), ' ');

@@ -24,6 +24,9 @@ class CommandLine {
   void repeated_option(const std::string& name, const std::string& metavar, const std::string& help);
   // --name, no value.
   void flag(const std::string& name, const std::string& help);
+  // A one-letter spelling of a declared option: alias('o', "output") accepts "-o PATH"
+  // (and "-o=PATH") as "--output PATH".
+  void alias(char letter, const std::string& name);
   // A positional argument, in declaration order.
   void positional(const std::string& name, const std::string& help, bool required = true);
 
@@ -57,6 +60,7 @@ class CommandLine {
 
   std::string tool_, manual_;
   std::vector<Declared> declared_;
+  std::map<char, std::string> aliases_;  // letter -> option name
   std::map<std::string, std::vector<std::string>> values_;
   std::vector<std::string> argv_;
 };

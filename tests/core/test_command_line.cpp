@@ -65,3 +65,27 @@ TEST_CASE("Help lists every option with its default", "[core][cli]") {
   CHECK_THAT(help, Catch::Contains("--size LENGTH") && Catch::Contains("[default: 1mm]") &&
                        Catch::Contains("  $ latmpm-demo --size 2mm"));
 }
+
+TEST_CASE("A one-letter alias stands for its option", "[core]") {
+  CommandLine cl("latmpm-demo", "demo\n");
+  cl.option("output", "PATH", "where to write");
+  cl.alias('o', "output");
+  cl.positional("input", "input file");
+  SECTION("separate value") {
+    const char* argv[] = {"latmpm-demo", "-o", "out.h5", "in.h5"};
+    cl.parse(4, argv);
+    CHECK(cl.text("output") == "out.h5");
+    CHECK(cl.text("input") == "in.h5");
+  }
+  SECTION("attached value, and - still means a pipe") {
+    const char* argv[] = {"latmpm-demo", "-o=-", "-"};
+    cl.parse(3, argv);
+    CHECK(cl.text("output") == "-");
+    CHECK(cl.text("input") == "-");
+  }
+  SECTION("other letters stay unknown") {
+    const char* argv[] = {"latmpm-demo", "-x", "in.h5"};
+    CHECK_THROWS_AS(cl.parse(3, argv), UsageError);
+  }
+  CHECK_THAT(cl.help_text(), Catch::Contains("-o, --output PATH"));
+}
