@@ -21,9 +21,15 @@ struct Plate {
   Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();
 };
 
+// How strut ends are shaped. `round` (capsules) joins struts smoothly at nodes; `flat`
+// (plain cylinders, exactly as long as the strut) is for a single column whose length must be
+// exact, e.g. the buckling column of paper A Sec. 4 (see docs/geometry.md).
+enum class StrutEnds { round, flat };
+
 struct StrutGraph {
   std::string name;               // "T2P30", "column", "bcc"...
   std::string strut_body = "lattice";  // body name of the struts ("lattice", "column")
+  StrutEnds strut_ends = StrutEnds::round;  // file: /geometry @strut_ends ("round" if absent)
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Strut> struts;
   std::vector<Plate> plates;

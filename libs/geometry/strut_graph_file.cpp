@@ -37,6 +37,7 @@ void write_strut_graph(Hdf5File& file, const StrutGraph& g) {
   file.set_attribute("/geometry", "name", g.name);
   file.set_attribute("/geometry", "strut_body", g.strut_body);
   file.set_attribute("/geometry", "length_unit", "m");
+  file.set_attribute("/geometry", "strut_ends", g.strut_ends == StrutEnds::flat ? "flat" : "round");
   file.write("/geometry/nodes", nodes, {g.nodes.size(), 3});
   file.write("/geometry/struts", ends, {g.struts.size(), 2});
   file.write("/geometry/strut_radius", radius, {g.struts.size()});
@@ -54,6 +55,13 @@ StrutGraph read_strut_graph(const Hdf5File& file) {
   StrutGraph g;
   g.name = file.string_attribute("/geometry", "name");
   g.strut_body = file.string_attribute("/geometry", "strut_body");
+  if (file.has_attribute("/geometry", "strut_ends")) {  // optional: older files are all round
+    std::string ends = file.string_attribute("/geometry", "strut_ends");
+    if (ends == "flat")
+      g.strut_ends = StrutEnds::flat;
+    else if (ends != "round")
+      fail("/geometry@strut_ends", "'" + ends + "' is neither 'round' nor 'flat'");
+  }
   std::vector<size_t> dims;
   auto nodes = file.read_doubles("/geometry/nodes", &dims);
   if (dims.size() != 2 || dims[1] != 3) fail("/geometry/nodes", "expected an N×3 array");
