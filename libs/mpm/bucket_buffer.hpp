@@ -1,0 +1,89 @@
+// A bucket's dense scratch copy of the grid nodes around it: 14×14×14 nodes of 8 lanes
+// with fixed strides, so the particle loops address nodes with a few multiply-adds
+// instead of hash look-ups. P2G scatters into it and then adds it to the sparse grid;
+// G2P first copies the grid into it and then gathers from it.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "mpm/particle_buckets.hpp"
+#include "mpm/sparse_grid.hpp"
+
+namespace latmpm::mpm {
+
+// Active-block index of each grid block a bucket's buffer overlaps (4 per axis), −1 if
+// inactive.
+using BlockTable = std::array<int, 64>;
+
+struct BucketBuffer {
+  static constexpr int width = ParticleBuckets::buffer_width;
+  static constexpr int stride_j = width * lane::count;
+  static constexpr int stride_i = width * stride_j;
+
+  std::vector<Real> data = std::vector<Real>(size_t(width) * width * width * lane::count);
+  std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
+
+  void attach(const Bucket& b) {
+    for (int a = 0; a < 3; ++a) origin[a] = ParticleBuckets::cells * b.coord[a] + ParticleBuckets::buffer_lo;
+  }
+  // Offset (in Reals) of the node with grid coordinates (i, j, k).
+  int offset(int i, int j, int k) const {
+    return (i - origin[0]) * stride_i + (j - origin[1]) * stride_j + (k - origin[2]) * lane::count;
+  }
+};
+
+// First grid block (per axis) a bucket's buffer overlaps.
+inline int first_table_block(int bucket_coord) {
+  return floor_div(ParticleBuckets::cells * bucket_coord + ParticleBuckets::buffer_lo, SparseGrid::block_width);
+}
+
+// Calls fn(grid_node, buffer_node) for every node of the bucket's box.
+template <class GridPtr, class Fn>
+void for_each_box_node(const Bucket& b, const BlockTable& table, GridPtr grid_blocks,
+                       BucketBuffer& buffer, Fn&& fn) {
+  constexpr int bw = SparseGrid::block_width;
+  int first[3];
+  for (int a = 0; a < 3; ++a) first[a] = first_table_block(b.coord[a]);
+  for (int i = b.box_lo[0]; i <= b.box_hi[0]; ++i) {
+    const int bi = floor_div(i, bw), li = i - bw * bi;
+    for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
+      const int bj = floor_div(j, bw), lj = j - bw * bj;
+      for (int k = b.box_lo[2]; k <= b.box_hi[2]; ++k) {
+        const int bk = floor_div(k, bw), lk = k - bw * bk;
+        const int block = table[((bi - first[0]) * 4 + (bj - first[1])) * 4 + (bk - first[2])];
+        fn(grid_blocks(block) + SparseGrid::node_offset(li, lj, lk), buffer.data.data() + buffer.offset(i, j, k));
+      }
+    }
+  }
+}
+
+// Zeroes the buffer nodes of the bucket's box.
+inline void clear_box(const Bucket& b, BucketBuffer& buffer) {
+  for (int i = b.box_lo[0]; i <= b.box_hi[0]; ++i)
+    for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
+      Real* row = buffer.data.data() + buffer.offset(i, j, b.box_lo[2]);
+      std::fill(row, row + (b.box_hi[2] - b.box_lo[2] + 1) * lane::count, Real(0));
+    }
+}
+
+// Adds the buffer's box into the grid: lanes 0–6 summed, the constraint lane by maximum
+// (so the same rigid body wins wherever it touches, independent of order).
+inline void add_box_to_grid(const Bucket& b, const BlockTable& table, SparseGrid& grid,
+                            BucketBuffer& buffer) {
+  for_each_box_node(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+                    [](Real* g, const Real* l) {
+                      for (int c = 0; c < lane::constraint; ++c) g[c] += l[c];
+                      g[lane::constraint] = std::max(g[lane::constraint], l[lane::constraint]);
+                    });
+}
+
+// Copies the grid's nodes of the bucket's box into the buffer.
+inline void copy_box_from_grid(const Bucket& b, const BlockTable& table, const SparseGrid& grid,
+                               BucketBuffer& buffer) {
+  for_each_box_node(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+                    [](const Real* g, Real* l) {
+                      for (int c = 0; c < lane::count; ++c) l[c] = g[c];
+                    });
+}
+
+}  // namespace latmpm::mpm

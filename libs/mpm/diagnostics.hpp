@@ -1,0 +1,40 @@
+// What one step reports: the quantities the run's series output needs (issue 5,
+// "Diagnostics"). Forces in N, energies in J, SI throughout.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "mpm/real.hpp"
+
+namespace latmpm::mpm {
+
+struct StepDiagnostics {
+  int64_t step = 0;     // steps completed (1 after the first step)
+  Real time = 0;        // s, at the end of the step
+  Real dt = 0;          // s, this step's time step
+  Real stable_dt = 0;   // s, cfl · h / max(c + |v|) at the start of this step
+
+  // Per body, indexed like Simulation::bodies().
+  // Displacement: driven bodies ∫ v dt, fixed bodies 0, deformable bodies the change of
+  // their centre of mass (m).
+  std::vector<Vec3> body_displacement;
+  // Reaction: for fixed and driven bodies the force their constraint applies to the rest of
+  // the model, Σ over their constrained nodes of  (m_i v_prescribed − m_i v_i − dt f_i)/dt,
+  // f_i the nodal internal + gravity force (N). A plate compressing a specimen downwards
+  // has a negative z reaction; the load the specimen carries is its negation. Zero for
+  // deformable bodies.
+  std::vector<Vec3> reaction;
+
+  // Record-layer force A · σ̄_zz (N, tension positive; see Settings::record_tag).
+  Real record_force = 0;
+
+  Real kinetic_energy = 0;  // ½ Σ m v² over deformable points, J
+  Real strain_energy = 0;   // Σ V0 ψ over deformable points, J (linear elastic: ½ σ:ε V)
+  // Work done on the deformable material by reactions of driven bodies and by gravity,
+  // accumulated since the start, J. Energy balance: kinetic + strain ≈ initial + work
+  // (minus what PIC damping and contact dissipate).
+  Real external_work = 0;
+  Real max_speed = 0;       // max |v_p| over deformable points after the step, m/s
+};
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,85 @@
+#include "mpm/grid_update.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace latmpm::mpm {
+
+namespace {
+template <class Fn>
+void for_each_block(SparseGrid& grid, Fn&& fn) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.block_count(), 8), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t b = r.begin(); b < r.end(); ++b) fn(b, grid.block(b));
+  });
+}
+
+int constrained_body(const Real* node) { return int(node[lane::constraint]) - 1; }
+}  // namespace
+
+Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
+                                 const std::vector<BodyInfo>& bodies) {
+  const size_t nb = bodies.size();
+  // Per block and body partial sums, added in block order afterwards: deterministic.
+  std::vector<Vec3> block_force(grid.block_count() * nb, Vec3::Zero());
+  std::vector<Real> block_power(grid.block_count() * nb, 0);
+  const Real inv_dt = 1 / dt;
+  for_each_block(grid, [&](size_t b, Real* block) {
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+      Real* node = block + n * lane::count;
+      const Real m = node[lane::mass];
+      if (!(m > 0)) {
+        for (int c = lane::momentum; c < lane::constraint; ++c) node[c] = 0;
+        continue;
+      }
+      const Vec3 p(node[1], node[2], node[3]);
+      const Vec3 f = Vec3(node[4], node[5], node[6]) + m * gravity;
+      const Vec3 v_old = p / m;
+      Vec3 v_new;
+      const int body = constrained_body(node);
+      if (body >= 0) {
+        v_new = bodies[size_t(body)].velocity;
+        const Vec3 r = (m * v_new - p) * inv_dt - f;
+        block_force[b * nb + size_t(body)] += r;
+        block_power[b * nb + size_t(body)] += r.dot(v_new);
+      } else {
+        v_new = v_old + dt / m * f;
+      }
+      for (int c = 0; c < 3; ++c) {
+        node[lane::momentum + c] = v_new[c];
+        node[lane::force + c] = v_new[c] - v_old[c];
+      }
+    }
+  });
+  Reactions out{std::vector<Vec3>(nb, Vec3::Zero()), std::vector<Real>(nb, 0)};
+  for (size_t b = 0; b < grid.block_count(); ++b)
+    for (size_t k = 0; k < nb; ++k) {
+      out.force[k] += block_force[b * nb + k];
+      out.power[k] += block_power[b * nb + k];
+    }
+  return out;
+}
+
+void grid_velocity_from_momentum(SparseGrid& grid, int from, int to, const std::vector<BodyInfo>& bodies) {
+  for_each_block(grid, [&](size_t, Real* block) {
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+      Real* node = block + n * lane::count;
+      const Real m = node[lane::mass];
+      const int body = constrained_body(node);
+      for (int c = 0; c < 3; ++c) {
+        const Real v = body >= 0 ? bodies[size_t(body)].velocity[c] : (m > 0 ? node[from + c] / m : Real(0));
+        node[to + c] = v;
+      }
+    }
+  });
+}
+
+void clear_grid_lanes(SparseGrid& grid, int first, int count) {
+  for_each_block(grid, [&](size_t, Real* block) {
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n)
+      for (int c = first; c < first + count; ++c) block[n * lane::count + c] = 0;
+  });
+}
+
+void clear_grid(SparseGrid& grid) { clear_grid_lanes(grid, 0, lane::count); }
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,34 @@
+// Node-wise stages of a step on the sparse grid: the velocity update with forces and
+// boundary conditions, the reactions those conditions need, and small lane operations the
+// update schemes use.
+#pragma once
+#include <vector>
+
+#include "mpm/sparse_grid.hpp"
+#include "mpm/transfer.hpp"
+
+namespace latmpm::mpm {
+
+// Per constrained body: the force its constraint applies to the model (N), and the power
+// of that force at the prescribed velocity (W).
+struct Reactions {
+  std::vector<Vec3> force;
+  std::vector<Real> power;
+};
+
+// Explicit update of every node (Paper B Eq. 5): v_old = p/m, f = f_int + m g,
+// v_new = v_old + dt f/m — or, on a node touched by a fixed or driven body, the prescribed
+// velocity, with the reaction r = (m v_prescribed − p)/dt − f that enforcing it takes.
+// Before: lanes m, p, f, constraint. After: m, v_new, v_new − v_old, constraint.
+Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
+                                 const std::vector<BodyInfo>& bodies);
+
+// v = p/m with the boundary conditions applied, from lanes [from, from+3) into
+// [to, to+3) (MUSL's remapped velocity, USF's velocity before the forces).
+void grid_velocity_from_momentum(SparseGrid& grid, int from, int to, const std::vector<BodyInfo>& bodies);
+
+// Zeroes lanes [first, first + count) of every node.
+void clear_grid_lanes(SparseGrid& grid, int first, int count);
+void clear_grid(SparseGrid& grid);
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,24 @@
+#include "mpm/material.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace latmpm::mpm {
+
+Real MaterialParameters::lame_lambda() const {
+  return young_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+}
+Real MaterialParameters::shear_modulus() const { return young_modulus / (2 * (1 + poisson_ratio)); }
+Real MaterialParameters::p_wave_modulus() const { return lame_lambda() + 2 * shear_modulus(); }
+
+void validate(const MaterialParameters& m, const std::string& where, const std::string& field) {
+  if (!(m.young_modulus > 0) || !std::isfinite(m.young_modulus))
+    throw InputError(where, field + ".young_modulus", "must be a positive pressure, e.g. 10MPa");
+  if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5))
+    throw InputError(where, field + ".poisson_ratio", "must lie in (-1, 0.5)");
+  if (!(m.density > 0) || !std::isfinite(m.density))
+    throw InputError(where, field + ".density", "must be a positive density, e.g. 1050kg/m^3");
+}
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,36 @@
+// Material parameters of a body, as a scene gives them. The constitutive models themselves
+// live in linear_elastic.hpp and neo_hookean.hpp.
+#pragma once
+#include <string>
+
+#include "mpm/real.hpp"
+
+namespace latmpm::mpm {
+
+enum class MaterialKind {
+  linear_elastic,  // small-strain increments, Jaumann (objective) stress rate — paper A's model
+  neo_hookean,     // compressible neo-Hookean, Bonet & Wood Eq. (5.29): σ = [μ(b−I) + λ ln J I]/J
+};
+
+struct MaterialParameters {
+  MaterialKind kind = MaterialKind::linear_elastic;
+  Real young_modulus = 0;  // E, Pa
+  Real poisson_ratio = 0;  // ν, dimensionless, in (-1, 0.5)
+  Real density = 0;        // ρ0, kg/m³ (before the scene's mass scaling)
+
+  Real lame_lambda() const;  // λ = Eν / ((1+ν)(1−2ν)), Pa
+  Real shear_modulus() const;  // μ = E / (2(1+ν)), Pa
+  // P-wave modulus λ + 2μ (Pa): sets the dilatational wave speed sqrt((λ+2μ)/ρ).
+  Real p_wave_modulus() const;
+};
+
+// "linear_elastic", "neo_hookean".
+std::string to_string(MaterialKind kind);
+MaterialKind parse_material_kind(const std::string& name, const std::string& where = "",
+                                 const std::string& field = "");
+
+// Throws InputError(where, field, ...) if E ≤ 0, ν outside (-1, 0.5) or ρ ≤ 0.
+void validate(const MaterialParameters& material, const std::string& where,
+              const std::string& field);
+
+}  // namespace latmpm::mpm

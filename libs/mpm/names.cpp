@@ -1,0 +1,67 @@
+// Scene names of the solver's enumerations, both ways.
+#include <array>
+#include <utility>
+
+#include "core/errors.hpp"
+#include "mpm/body.hpp"
+#include "mpm/material.hpp"
+#include "mpm/settings.hpp"
+#include "mpm/shape_function_kind.hpp"
+
+namespace latmpm::mpm {
+
+namespace {
+template <class Enum, size_t N>
+std::string name_of(Enum value, const std::array<std::pair<Enum, const char*>, N>& names) {
+  for (const auto& [e, n] : names)
+    if (e == value) return n;
+  return "?";
+}
+
+template <class Enum, size_t N>
+Enum parse_name(const std::string& text, const std::array<std::pair<Enum, const char*>, N>& names,
+                const std::string& where, const std::string& field) {
+  std::string choices;
+  for (const auto& [e, n] : names) {
+    if (text == n) return e;
+    choices += (choices.empty() ? "" : ", ") + std::string(n);
+  }
+  throw InputError(where, field, "unknown value '" + text + "' (expected one of: " + choices + ")");
+}
+
+constexpr std::array<std::pair<ShapeFunctionKind, const char*>, 5> shape_names{{
+    {ShapeFunctionKind::linear, "linear"},
+    {ShapeFunctionKind::ugimp, "ugimp"},
+    {ShapeFunctionKind::cpgimp, "cpgimp"},
+    {ShapeFunctionKind::bspline2, "bspline2"},
+    {ShapeFunctionKind::bspline3, "bspline3"},
+}};
+constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
+    {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};
+constexpr std::array<std::pair<MaterialKind, const char*>, 2> material_names{{
+    {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}}};
+constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{
+    {BodyRole::deformable, "deformable"}, {BodyRole::fixed, "fixed"}, {BodyRole::driven, "driven"}}};
+}  // namespace
+
+std::string to_string(ShapeFunctionKind kind) { return name_of(kind, shape_names); }
+ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where,
+                                       const std::string& field) {
+  return parse_name(name, shape_names, where, field);
+}
+std::string to_string(UpdateScheme scheme) { return name_of(scheme, scheme_names); }
+UpdateScheme parse_update_scheme(const std::string& name, const std::string& where,
+                                 const std::string& field) {
+  return parse_name(name, scheme_names, where, field);
+}
+std::string to_string(MaterialKind kind) { return name_of(kind, material_names); }
+MaterialKind parse_material_kind(const std::string& name, const std::string& where,
+                                 const std::string& field) {
+  return parse_name(name, material_names, where, field);
+}
+std::string to_string(BodyRole role) { return name_of(role, role_names); }
+BodyRole parse_body_role(const std::string& name, const std::string& where, const std::string& field) {
+  return parse_name(name, role_names, where, field);
+}
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,34 @@
+// Particle state as a structure of arrays: one array per quantity, no per-particle
+// objects. The solver keeps particles sorted by grid bucket for locality, so the index of a
+// particle changes during a run; `id` is its index in the original PointSet.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "mpm/real.hpp"
+
+namespace latmpm::mpm {
+
+struct Particles {
+  std::vector<Vec3> position;        // m
+  std::vector<Vec3> velocity;        // m/s
+  std::vector<Real> mass;            // kg (density × mass scaling × initial volume)
+  std::vector<Real> volume0;         // m³, initial volume V0 (current volume = J · V0)
+  std::vector<Mat3> deformation;     // F, dimensionless
+  std::vector<SymTensor> stress;     // Cauchy stress, Pa, Voigt xx yy zz yz xz xy
+  std::vector<Vec3> half_size0;      // m, initial GIMP particle-domain half-lengths
+  std::vector<int32_t> body;         // index into Simulation::bodies()
+  std::vector<uint32_t> id;          // index in the PointSet the particles came from
+  std::vector<uint8_t> flags;        // bit flags below
+
+  static constexpr uint8_t record_flag = 1;  // carries the record tag
+
+  size_t size() const { return position.size(); }
+  Real jacobian(size_t p) const { return deformation[p].determinant(); }
+  Real von_mises_stress(size_t p) const { return von_mises(stress[p]); }
+  // Applies the same permutation (new index i takes old index order[i]) to every array.
+  void permute(const std::vector<uint32_t>& order);
+  void resize(size_t n);
+};
+
+}  // namespace latmpm::mpm

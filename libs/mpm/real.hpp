@@ -1,0 +1,38 @@
+// The one floating-point type of the solver and the small fixed-size types built on it.
+// Everything in libs/mpm computes in `Real`; switching it to float is one edit here.
+#pragma once
+#include <Eigen/Core>
+
+namespace latmpm::mpm {
+
+using Real = double;
+using Vec3 = Eigen::Matrix<Real, 3, 1>;
+using Mat3 = Eigen::Matrix<Real, 3, 3>;
+
+// A symmetric tensor (Cauchy stress) in Voigt order xx, yy, zz, yz, xz, xy.
+using SymTensor = Eigen::Matrix<Real, 6, 1>;
+
+inline Mat3 to_matrix(const SymTensor& s) {
+  Mat3 m;
+  m << s[0], s[5], s[4],
+       s[5], s[1], s[3],
+       s[4], s[3], s[2];
+  return m;
+}
+
+inline SymTensor to_voigt(const Mat3& m) {
+  SymTensor s;
+  s << m(0, 0), m(1, 1), m(2, 2), Real(0.5) * (m(1, 2) + m(2, 1)),
+      Real(0.5) * (m(0, 2) + m(2, 0)), Real(0.5) * (m(0, 1) + m(1, 0));
+  return s;
+}
+
+// von Mises equivalent stress sqrt(3/2 s:s), s the deviator (Pa).
+inline Real von_mises(const SymTensor& s) {
+  const Real p = (s[0] + s[1] + s[2]) / 3;
+  const Real dx = s[0] - p, dy = s[1] - p, dz = s[2] - p;
+  const Real j2 = Real(0.5) * (dx * dx + dy * dy + dz * dz) + s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
+  return std::sqrt(3 * j2);
+}
+
+}  // namespace latmpm::mpm

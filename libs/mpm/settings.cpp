@@ -1,0 +1,26 @@
+#include "mpm/settings.hpp"
+
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace latmpm::mpm {
+
+void validate(const Settings& s, const std::string& where) {
+  auto positive = [](Real v) { return v > 0 && std::isfinite(v); };
+  if (!positive(s.cell_size)) throw InputError(where, "cell_size", "must be a positive length");
+  if (!(s.cfl > 0 && s.cfl <= 1)) throw InputError(where, "cfl", "must lie in (0, 1]");
+  if (!(s.flip_blend >= 0 && s.flip_blend <= 1))
+    throw InputError(where, "flip_blend", "must lie in [0, 1] (0 = PIC, 1 = FLIP)");
+  if (!(s.fixed_time_step >= 0) || !std::isfinite(s.fixed_time_step))
+    throw InputError(where, "time_step", "must be a non-negative time");
+  if (!(s.max_time_step >= 0) || !std::isfinite(s.max_time_step))
+    throw InputError(where, "max_time_step", "must be a non-negative time");
+  if (!positive(s.mass_scaling)) throw InputError(where, "mass_scaling", "must be positive");
+  if (!s.gravity.allFinite()) throw InputError(where, "gravity", "must be finite");
+  if (!(s.record_layer_thickness >= 0)) throw InputError(where, "record_layer_thickness", "must not be negative");
+  if (s.threads < 0) throw InputError(where, "threads", "must not be negative (0 = all cores)");
+  if (!positive(s.runaway_energy_factor)) throw InputError(where, "runaway_energy_factor", "must be positive");
+}
+
+}  // namespace latmpm::mpm

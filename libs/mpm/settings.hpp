@@ -1,0 +1,63 @@
+// Solver settings that are not per body: discretisation, scheme, time step, loads, checks.
+// All dimensional values SI. docs/solver.md explains each choice.
+#pragma once
+#include <string>
+
+#include "mpm/real.hpp"
+#include "mpm/shape_function_kind.hpp"
+
+namespace latmpm::mpm {
+
+// Order of the stress update within a step (Bardenhagen 2002; Nairn 2003; Paper B Sec. 2:
+// USL). USL: stress from the new grid velocity at the end of the step. USF: stress from the
+// old grid velocity before the nodal forces are formed. MUSL: USL with the particle
+// momentum mapped back to the grid before the velocity gradient is taken.
+enum class UpdateScheme { usl, usf, musl };
+std::string to_string(UpdateScheme scheme);
+UpdateScheme parse_update_scheme(const std::string& name, const std::string& where = "",
+                                 const std::string& field = "");
+
+struct Settings {
+  Real cell_size = 0;  // h, m: background grid cell, nodes at i·h (the origin is a node)
+  ShapeFunctionKind shape_function = ShapeFunctionKind::ugimp;
+  UpdateScheme scheme = UpdateScheme::usl;
+  // Weight of FLIP in the particle velocity update, 0 = PIC, 1 = FLIP. 0.99 is usual:
+  // almost no numerical damping, enough to stop ringing of the grid's null modes.
+  Real flip_blend = 0.99;
+
+  // Time step: automatic, dt = cfl · h / max_p(c_p + |v_p|), c_p the dilatational wave
+  // speed of the particle's material (at its current J), re-evaluated every step.
+  Real cfl = 0.5;             // dimensionless, in (0, 1]
+  Real fixed_time_step = 0;   // s; > 0 replaces the automatic step (checked against the limit)
+  Real max_time_step = 0;     // s; > 0 caps the automatic step (e.g. to sample outputs)
+
+  // Mass scaling (Paper A Sec. 4: ρ = 6 ρ0 for quasi-static runs): every body's density is
+  // multiplied by this factor; it lowers the wave speed and enlarges the stable step.
+  Real mass_scaling = 1;      // dimensionless, ≥ 1 in practice
+
+  Vec3 gravity = Vec3::Zero();  // m/s², acts on deformable bodies
+
+  // Record layer (Paper A Sec. 5.1, GIMP runs): points carrying this tag in the point set
+  // measure the load as F = A · σ̄_zz, σ̄_zz their volume-weighted mean vertical stress and
+  // A = (their total initial volume) / (layer thickness). Empty name or no such tag: no
+  // record force (reported as 0).
+  std::string record_tag = "record";
+  // Layer thickness, m. 0: the tagged points' initial extent along z plus one point spacing
+  // (cell_size / ppc), i.e. the thickness of the layer of material those points represent.
+  Real record_layer_thickness = 0;
+
+  // Worker threads; 0 = all the machine offers. Results are identical for any count.
+  int threads = 0;
+
+  // Stability checks (issue: "Stability"). The run stops with NumericalError when the
+  // kinetic energy exceeds runaway_energy_factor × (initial energy + external work so far),
+  // beyond a floor of runaway_energy_floor (J) that ignores round-off at rest.
+  Real runaway_energy_factor = 10;
+  Real runaway_energy_floor = 1e-12;
+};
+
+// Throws InputError(where, field, ...) for a non-positive cell size, cfl outside (0, 1],
+// flip_blend outside [0, 1], negative time steps or mass scaling ≤ 0.
+void validate(const Settings& settings, const std::string& where);
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,21 @@
+// The closed set of shape functions the solver offers, and their names in scenes.
+#pragma once
+#include <string>
+
+namespace latmpm::mpm {
+
+enum class ShapeFunctionKind {
+  linear,     // tent functions of the original MPM (8-node stencil)
+  ugimp,      // GIMP with a particle domain of fixed size (the paper's "GIMP"; 27 nodes)
+  cpgimp,     // GIMP with the domain stretched by the diagonal of F (64-node stencil)
+  bspline2,   // quadratic B-spline (27 nodes)
+  bspline3,   // cubic B-spline (64 nodes)
+};
+
+// "linear", "ugimp", "cpgimp", "bspline2", "bspline3".
+std::string to_string(ShapeFunctionKind kind);
+// Inverse of to_string; throws InputError(where, field, ...) for an unknown name.
+ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where = "",
+                                       const std::string& field = "");
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,26 @@
+// Linear (tent) shape functions of the original MPM (Sulsky et al. 1994): S(ξ) = 1 − |ξ|,
+// two nodes per axis. Gradients jump where a particle crosses a cell face (the cell-crossing
+// error GIMP and B-splines remove).
+#pragma once
+#include "mpm/stencil.hpp"
+
+namespace latmpm::mpm {
+
+struct LinearShape {
+  static constexpr int nodes_per_axis = 2;
+  static constexpr int reach_below = 0;  // lowest stencil node relative to the particle's cell
+  static constexpr int reach_above = 1;  // highest stencil node relative to the particle's cell
+  static constexpr bool uses_half_size = false;
+  static constexpr bool stretches_with_f = false;
+
+  static void weights_1d(Real xi, Real /*half*/, int& base, Real* w, Real* dw) {
+    base = floor_to_int(xi);
+    const Real f = xi - base;  // in [0, 1)
+    w[0] = 1 - f;
+    w[1] = f;
+    dw[0] = -1;
+    dw[1] = 1;
+  }
+};
+
+}  // namespace latmpm::mpm
