@@ -11,6 +11,8 @@
 // every three layers: ABC stacking.
 #include "geometry/tetrahedral_lattice.hpp"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
