@@ -16,6 +16,12 @@ namespace latmpm {
 
 class Hdf5File;
 
+// A strut graph together with the member of each strut (same length as graph.struts).
+struct MemberGraph {
+  StrutGraph graph;
+  std::vector<int32_t> member;
+};
+
 struct MemberChain {
   std::vector<int32_t> nodes;   // from one end to the other (k + 1 nodes)
   std::vector<int32_t> struts;  // the k segments in chain order
