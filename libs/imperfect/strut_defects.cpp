@@ -284,19 +284,24 @@ DefectResult remove_struts(MemberGraph& g, const MissingStruts& m, RandomStream&
      << ", asked " << percent(m.fraction) << ")";
   Pieces pieces = connected_pieces(graph);
   if (pieces.count > 1) {
-    const int main = static_cast<int>(std::max_element(pieces.struts_in.begin(), pieces.struts_in.end()) - pieces.struts_in.begin());
+    // The main piece: the one holding the plates (a body clamped between them), or the
+    // largest without plates.
+    int main = static_cast<int>(std::max_element(pieces.struts_in.begin(), pieces.struts_in.end()) - pieces.struts_in.begin());
+    bool plates_together = true;
+    if (!pieces.of_plate.empty()) {
+      main = pieces.of_plate.front();
+      for (int p : pieces.of_plate) plates_together = plates_together && p == main;
+    }
     const size_t total = graph.struts.size();
     std::ostringstream pieces_text;
-    pieces_text << pieces.count << " separate pieces (the largest holds "
+    pieces_text << pieces.count << " separate pieces (the main one holds "
                 << percent(total ? double(pieces.struts_in[main]) / total : 0.0) << " of the strut segments)";
     std::ostringstream state;
     state << "the rest is " << pieces_text.str();
-    bool plates_on_main = true;
-    for (int p : pieces.of_plate) plates_on_main = plates_on_main && p == main;
-    if (m.on_disconnected == OnDisconnected::refuse || (m.on_disconnected == OnDisconnected::drop && !plates_on_main))
+    if (m.on_disconnected == OnDisconnected::refuse || (m.on_disconnected == OnDisconnected::drop && !plates_together))
       throw InputError(option, "", "removing " + std::to_string(removed) + " struts leaves " + pieces_text.str() +
-                                       (plates_on_main ? "" : ", and a plate is cut off the main piece") + "; change --seed" +
-                                       (plates_on_main ? " or use --disconnected drop|keep" : " or use --disconnected keep"));
+                                       (plates_together ? "" : ", and the plates are no longer joined through the lattice") + "; change --seed" +
+                                       (plates_together ? " or use --disconnected drop|keep" : " or use --disconnected keep"));
     if (m.on_disconnected == OnDisconnected::drop) {
       std::vector<bool> on_main(graph.struts.size());
       for (size_t s = 0; s < graph.struts.size(); ++s) on_main[s] = pieces.of_strut[s] == main;

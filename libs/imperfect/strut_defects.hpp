@@ -40,8 +40,9 @@ enum class OnDisconnected { refuse, drop, keep };
 
 // round(fraction · members) members, chosen uniformly at random, are removed; nodes left
 // without struts are removed. If the rest is not one connected body (struts and plates):
-// refuse (InputError), drop the pieces not holding the most struts (if both plates stay on
-// the main piece), or keep it and say so.
+// refuse (InputError), drop the loose pieces (keeping the piece that holds the plates, or
+// the largest if there are none; refused if the plates end up in different pieces), or keep
+// it and say so.
 struct MissingStruts {
   double fraction = 0;
   OnDisconnected on_disconnected = OnDisconnected::refuse;
