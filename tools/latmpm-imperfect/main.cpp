@@ -49,7 +49,6 @@ int run(int argc, char** argv) {
   const ImperfectionPlan plan = plan_from_command_line(cl);
   if (plan.steps.empty()) throw UsageError("nothing to do: give --type or a strut defect option (see --help)");
   const bool report = !cl.flag_set("quiet");
-  if (report) std::cerr << "latmpm-imperfect: " << cl.resolved() << "\n";
 
   // 2. Read the input and its provenance.
   InputFile in(cl.text("input"), "input");
@@ -88,8 +87,9 @@ int run(int argc, char** argv) {
   out.commit();
   progress.finish();
 
-  // 5. Report.
+  // 5. Report: the resolved options (to repeat the run exactly) and what each step did.
   if (report) {
+    std::cerr << "latmpm-imperfect: " << cl.resolved() << "\n";
     for (const auto& record : result.records) std::cerr << "  " << record << "\n";
     for (const auto& note : result.notes) std::cerr << "  note: " << note << "\n";
   }
