@@ -2,6 +2,8 @@
 // Everything in libs/mpm computes in `Real`; switching it to float is one edit here.
 #pragma once
 #include <Eigen/Core>
+#include <Eigen/LU>  // determinant()
+#include <cmath>
 
 namespace latmpm::mpm {
 

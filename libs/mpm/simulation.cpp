@@ -45,6 +45,7 @@ struct Simulation::Impl {
   std::vector<BucketTally> tallies;
   std::vector<RunTally> run_tallies;
   bool needs_sort = true;
+  bool grid_holds_velocity = false;  // lanes 1–3: momentum (false) or velocity (true)
 
   // State carried between steps.
   Real max_speed = 0;            // m/s, deformable and driven points
@@ -112,6 +113,7 @@ struct Simulation::Impl {
             tables[bi][(i * 4 + j) * 4 + k] = grid.find(first[0] + i, first[1] + j, first[2] + k);
     }
     clear_grid(grid);
+    grid_holds_velocity = false;
     tallies.assign(list.size(), BucketTally{});
     run_tallies.assign(buckets.runs().size(), RunTally{});
   }
@@ -512,6 +514,7 @@ void Simulation::stage_particles_to_grid() {
 void Simulation::stage_grid_update(Real dt) {
   auto& im = *impl_;
   im.arena.execute([&] { im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info); });
+  im.grid_holds_velocity = true;
 }
 
 void Simulation::stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>& field) {
@@ -527,6 +530,7 @@ void Simulation::stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>&
           for (int a = 0; a < 3; ++a) node[lane::momentum + a] = node[lane::force + a] = v[a];
         }
   }
+  impl_->grid_holds_velocity = true;
 }
 
 void Simulation::stage_grid_to_particles(Real dt) {
@@ -543,7 +547,8 @@ Simulation::GridTotals Simulation::grid_totals() const {
     for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
       const Real* node = g.block(b) + n * lane::count;
       t.mass += node[lane::mass];
-      for (int a = 0; a < 3; ++a) t.momentum[a] += node[lane::momentum + a];
+      const Real scale = impl_->grid_holds_velocity ? node[lane::mass] : Real(1);
+      for (int a = 0; a < 3; ++a) t.momentum[a] += scale * node[lane::momentum + a];
     }
   return t;
 }

@@ -71,7 +71,7 @@ class Simulation {
   // --- The stages of a step, public so tests can check each transfer on its own. ---
   struct GridTotals {
     Real mass = 0;           // Σ m_i, kg
-    Vec3 momentum = Vec3::Zero();  // Σ m_i v_i after the last grid stage, kg m/s
+    Vec3 momentum = Vec3::Zero();  // Σ p_i (or Σ m_i v_i after a grid update), kg m/s
   };
   // Resets the grid and maps mass and momentum (and internal force) of the particles to it.
   void stage_particles_to_grid();
