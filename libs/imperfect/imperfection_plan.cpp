@@ -38,7 +38,11 @@ long whole_number(const std::string& text, const std::string& option) {
   return v;
 }
 
-// Options in the order given: (name, value) pairs, from argv as the parser accepted it.
+// Options that take no value: latmpm-imperfect's flags (CommandLine::flag).
+const std::set<std::string> flags_without_value = {"quiet", "help", "version"};
+
+// Options in the order given: (name, value) pairs, from argv as the parser accepted it
+// (CommandLine keeps values, not their order across options).
 std::vector<std::pair<std::string, std::string>> options_in_order(const CommandLine& cl) {
   std::vector<std::pair<std::string, std::string>> out;
   const auto& argv = cl.argv();
@@ -54,7 +58,7 @@ std::vector<std::pair<std::string, std::string>> options_in_order(const CommandL
     if (auto eq = name.find('='); eq != std::string::npos) {
       value = name.substr(eq + 1);
       name = name.substr(0, eq);
-    } else if (name != "quiet" && i + 1 < argv.size()) {
+    } else if (!flags_without_value.count(name) && i + 1 < argv.size()) {
       value = argv[++i];
     }
     out.emplace_back(name, value);
@@ -115,13 +119,13 @@ void declare_imperfection_options(CommandLine& cl) {
   cl.repeated_option("column-bottom", "Z", "sine: height z0 where the sine starts [bottom of the moved bodies]");
   cl.option("strut-diameter-cov", "PCT", "strut graph: scatter of strut diameters, coefficient of variation (typical 3-10%)");
   cl.option("strut-diameter-bias", "PCT", "strut graph: mean change of strut diameters, e.g. 5% thicker than designed");
-  cl.option("diameter-distribution", "D", "lognormal or normal (redrawn until positive)", "lognormal");
+  cl.option("diameter-distribution", "D", "lognormal, or normal (redrawn until positive) [lognormal]");
   cl.option("waviness", "PCT", "strut graph: random smooth lateral deflection, sd of the first mode / strut length (typical 0.5-3%)");
-  cl.option("waviness-modes", "N", "sine modes in the deflection, mode k with sd amplitude/k^2", "3");
-  cl.option("waviness-segments", "N", "capsules a straight strut is split into to follow its curve", "8");
+  cl.option("waviness-modes", "N", "sine modes in the deflection, mode k with sd amplitude/k^2 [3]");
+  cl.option("waviness-segments", "N", "capsules a straight strut is split into to follow its curve [8]");
   cl.option("node-jitter", "LEN", "strut graph: Gaussian displacement of strut junctions, sd per axis (typical 0.02-0.1mm)");
   cl.option("missing-struts", "PCT", "strut graph: fraction of struts removed at random (typical 0-2%)");
-  cl.option("disconnected", "WHAT", "when removal splits the body: refuse, drop (the loose pieces) or keep", "refuse");
+  cl.option("disconnected", "WHAT", "when removal splits the body: refuse, drop (the loose pieces) or keep [refuse]");
   cl.option("seed", "N", "seed of the statistical defects: the same seed gives the same file", "1");
 }
 
@@ -174,7 +178,7 @@ ImperfectionPlan plan_from_command_line(const CommandLine& cl) {
       if (cl.given("strut-diameter-cov")) step.diameter.cov = fraction(cl, "strut-diameter-cov");
       else step.option = "--strut-diameter-bias";
       if (cl.given("strut-diameter-bias")) step.diameter.bias = fraction(cl, "strut-diameter-bias");
-      const std::string distribution = cl.text("diameter-distribution");
+      const std::string distribution = cl.given("diameter-distribution") ? cl.text("diameter-distribution") : "lognormal";
       if (distribution != "lognormal" && distribution != "normal")
         throw InputError("--diameter-distribution", "", "'" + distribution + "' is not lognormal or normal");
       step.diameter.normal = distribution == "normal";
@@ -184,8 +188,8 @@ ImperfectionPlan plan_from_command_line(const CommandLine& cl) {
       step.kind = ImperfectionStep::Kind::waviness;
       if (!cl.given("waviness")) throw UsageError("--waviness-modes and --waviness-segments need --waviness");
       step.waviness.amplitude = fraction(cl, "waviness");
-      step.waviness.modes = static_cast<int>(cl.integer("waviness-modes"));
-      step.waviness.segments = static_cast<int>(cl.integer("waviness-segments"));
+      if (cl.given("waviness-modes")) step.waviness.modes = static_cast<int>(cl.integer("waviness-modes"));
+      if (cl.given("waviness-segments")) step.waviness.segments = static_cast<int>(cl.integer("waviness-segments"));
     } else if (p.starter == "node-jitter") {
       step.kind = ImperfectionStep::Kind::jitter;
       step.jitter.sigma = cl.quantity("node-jitter", dimension::length);
@@ -193,7 +197,7 @@ ImperfectionPlan plan_from_command_line(const CommandLine& cl) {
       step.kind = ImperfectionStep::Kind::missing;
       if (!cl.given("missing-struts")) throw UsageError("--disconnected needs --missing-struts");
       step.missing.fraction = fraction(cl, "missing-struts");
-      const std::string what = cl.text("disconnected");
+      const std::string what = cl.given("disconnected") ? cl.text("disconnected") : "refuse";
       if (what == "refuse") step.missing.on_disconnected = OnDisconnected::refuse;
       else if (what == "drop") step.missing.on_disconnected = OnDisconnected::drop;
       else if (what == "keep") step.missing.on_disconnected = OnDisconnected::keep;

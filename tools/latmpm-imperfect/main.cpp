@@ -89,7 +89,9 @@ int run(int argc, char** argv) {
 
   // 5. Report: the resolved options (to repeat the run exactly) and what each step did.
   if (report) {
-    std::cerr << "latmpm-imperfect: " << cl.resolved() << "\n";
+    // The command as typed (the order of the options matters), with the seed made explicit.
+    std::cerr << "latmpm-imperfect: " << quoted_command_line(argc, argv)
+              << (cl.given("seed") ? "" : " --seed " + cl.text("seed")) << "\n";
     for (const auto& record : result.records) std::cerr << "  " << record << "\n";
     for (const auto& note : result.notes) std::cerr << "  note: " << note << "\n";
   }
