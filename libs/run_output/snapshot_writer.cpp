@@ -32,43 +32,56 @@ SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance)
     if (name.rfind("snap_", 0) == 0 && entry.path().extension() == ".h5") fs::remove(entry.path());
   }
   fs::remove(xdmf_path(), ec);
+  fs::remove(dir / "failure.h5", ec);  // a failed earlier run's state
+  fs::remove(fs::path(run_dir_) / "failure.xmf", ec);
+}
+
+void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& path) const {
+  const size_t n = s.size();
+  OutputFile out(path, path);
+  {
+    Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
+    write_provenance(file, provenance_);
+    file.write("/particles/position", s.position, {n, 3});
+    file.write("/particles/velocity", s.velocity, {n, 3});
+    file.write("/particles/stress", s.stress, {n, 6});
+    file.write("/particles/von_mises", s.von_mises, {n});
+    file.write("/particles/J", s.jacobian, {n});
+    file.write("/particles/body", s.body, {n});
+    file.write_strings("/particles/body_names", s.body_names);
+    file.set_attribute("/particles", "time", s.time);
+    file.set_attribute("/particles", "step", int64_t(s.step));
+    file.set_attribute("/particles/stress", "components", "xx xy xz yy yz zz");
+  }
+  out.commit();
+}
+
+void SnapshotWriter::write_index(const std::vector<XdmfFrame>& frames, const std::string& path) const {
+  OutputFile xmf(path, path);
+  {
+    std::ofstream text(xmf.temp_path(), std::ios::trunc);
+    text << xdmf_time_series(frames);
+    if (!text.flush()) throw InputError(path, "", "cannot write (disk full?)");
+  }
+  xmf.commit();
 }
 
 std::string SnapshotWriter::write(const ParticleSnapshot& s) {
   char name[32];
   std::snprintf(name, sizeof name, "snap_%06lld.h5", static_cast<long long>(s.step));
   const std::string relative = std::string("snapshots/") + name;
-  const std::string path = run_dir_ + "/" + relative;
-  const size_t n = s.size();
-  {
-    OutputFile out(path, path);
-    {
-      Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
-      write_provenance(file, provenance_);
-      file.write("/particles/position", s.position, {n, 3});
-      file.write("/particles/velocity", s.velocity, {n, 3});
-      file.write("/particles/stress", s.stress, {n, 6});
-      file.write("/particles/von_mises", s.von_mises, {n});
-      file.write("/particles/J", s.jacobian, {n});
-      file.write("/particles/body", s.body, {n});
-      file.write_strings("/particles/body_names", s.body_names);
-      file.set_attribute("/particles", "time", s.time);
-      file.set_attribute("/particles", "step", int64_t(s.step));
-      file.set_attribute("/particles/stress", "components", "xx xy xz yy yz zz");
-    }
-    out.commit();
-  }
+  write_file(s, run_dir_ + "/" + relative);
   if (!frames_.empty() && frames_.back().step == s.step) frames_.pop_back();
-  frames_.push_back({relative, s.time, s.step, n});
+  frames_.push_back({relative, s.time, s.step, s.size()});
+  write_index(frames_, xdmf_path());
+  return run_dir_ + "/" + relative;
+}
 
-  OutputFile xmf(xdmf_path(), xdmf_path());
-  {
-    std::ofstream text(xmf.temp_path(), std::ios::trunc);
-    text << xdmf_time_series(frames_);
-    if (!text.flush()) throw InputError(xdmf_path(), "", "cannot write (disk full?)");
-  }
-  xmf.commit();
-  return path;
+std::string SnapshotWriter::write_separate(const ParticleSnapshot& s, const std::string& stem) {
+  const std::string relative = "snapshots/" + stem + ".h5";
+  write_file(s, run_dir_ + "/" + relative);
+  write_index({{relative, s.time, s.step, s.size()}}, run_dir_ + "/" + stem + ".xmf");
+  return run_dir_ + "/" + relative;
 }
 
 ParticleSnapshot read_snapshot(const std::string& path) {

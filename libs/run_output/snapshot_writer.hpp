@@ -14,15 +14,21 @@ namespace latmpm {
 
 class SnapshotWriter {
  public:
-  // Creates RUN_DIR/snapshots/ and removes snap_*.h5 left there by an earlier run.
+  // Creates RUN_DIR/snapshots/ and removes snap_*.h5 and failure.h5 left by an earlier run.
   SnapshotWriter(std::string run_dir, Provenance provenance);
   // Writes the snapshot and returns its path. A second snapshot of the same step replaces
   // the first (e.g. the final state when the last regular snapshot fell on the last step).
   std::string write(const ParticleSnapshot& snapshot);
+  // A snapshot outside the time series, RUN_DIR/snapshots/<stem>.h5 with its own
+  // RUN_DIR/<stem>.xmf (e.g. "failure": the state when a run stopped, possibly mid-step).
+  std::string write_separate(const ParticleSnapshot& snapshot, const std::string& stem);
   const std::vector<XdmfFrame>& frames() const { return frames_; }
   std::string xdmf_path() const { return run_dir_ + "/snapshots.xmf"; }
 
  private:
+  void write_file(const ParticleSnapshot& snapshot, const std::string& path) const;
+  void write_index(const std::vector<XdmfFrame>& frames, const std::string& path) const;
+
   std::string run_dir_;
   Provenance provenance_;
   std::vector<XdmfFrame> frames_;

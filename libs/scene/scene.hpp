@@ -38,7 +38,7 @@ struct BodySpec {
 };
 
 struct PointFileSpec {
-  std::string path;   // resolved against the scene file's directory
+  std::string path;   // absolute: resolved against the scene file's directory (--set: the current one)
   std::string where;  // location of its 'file' key
 };
 

@@ -84,11 +84,13 @@ void read_points(std::vector<TableReader> files, const std::string& directory, S
   for (TableReader& f : files) {
     std::string file = f.text("file");
     fs::path p(file);
-    if (p.is_relative()) p = fs::path(directory) / p;
+    // Relative to the scene file's directory; a path given with --set is relative to the
+    // current directory, like any other path typed on the command line.
+    if (p.is_relative() && !f.overridden("file")) p = fs::path(directory) / p;
     p = fs::absolute(p).lexically_normal();
     if (!fs::is_regular_file(p)) f.fail("file", "cannot find point file '" + p.string() + "'");
-    f.replace_text("file", p.string());
     s.point_files.push_back({p.string(), f.where("file")});
+    f.replace_text("file", p.string());  // after where(): the new value has no source line
     f.finish();
   }
   if (s.point_files.empty()) throw InputError(s.where, "points", "the scene names no point file ([[points]] file = \"...\")");

@@ -144,6 +144,10 @@ std::string TableReader::where(const std::string& key) const {
   return origins_->where(key_path(key), table_->get(key), table_);
 }
 
+bool TableReader::overridden(const std::string& key) const {
+  return where(key).rfind("--set ", 0) == 0;
+}
+
 void TableReader::fail(const std::string& key, const std::string& problem) const {
   throw InputError(where(key), key_path(key), problem);
 }

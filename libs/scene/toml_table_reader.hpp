@@ -47,6 +47,7 @@ class TableReader {
   const std::string& path() const { return path_; }
   std::string key_path(const std::string& key) const;
   std::string where(const std::string& key) const;  // location of key, or of this table
+  bool overridden(const std::string& key) const;    // the value came from --set
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
   bool has(const std::string& key);  // also declares the key as known

@@ -1,0 +1,62 @@
+#include "run_output/scene_simulation.hpp"
+
+#include "core/errors.hpp"
+#include "mpm/material.hpp"
+#include "mpm/shape_function_kind.hpp"
+
+namespace latmpm {
+
+mpm::Settings solver_settings(const Scene& scene, int threads) {
+  mpm::Settings s;
+  s.cell_size = scene.cell_size;
+  s.shape_function = mpm::parse_shape_function(to_string(scene.shape), scene.where, "grid.shape");
+  s.scheme = mpm::parse_update_scheme(to_string(scene.scheme), scene.where, "grid.scheme");
+  s.flip_blend = scene.flip;
+  s.cfl = scene.cfl;
+  s.fixed_time_step = scene.dt;
+  s.mass_scaling = scene.mass_scaling;
+  s.gravity = scene.gravity;
+  s.record_tag = scene.record_tag;
+  s.threads = threads;
+  mpm::validate(s, scene.where);
+  return s;
+}
+
+std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
+  const MaterialSpec* fallback = nullptr;
+  for (const auto& b : scene.bodies)
+    if (b.role == BodyRole::deformable && !fallback) fallback = &b.material;
+  std::vector<mpm::BodySettings> bodies;
+  for (const auto& b : scene.bodies) {
+    mpm::BodySettings s;
+    s.name = b.name;
+    s.role = mpm::parse_body_role(to_string(b.role), b.where, "bodies." + b.name + ".role");
+    const MaterialSpec* m = b.has_material ? &b.material : fallback;
+    if (!m)
+      throw InputError(b.where, "bodies." + b.name + ".material",
+                       "the scene has no deformable body to take a density from; give this body a material");
+    s.material.kind = mpm::parse_material_kind(to_string(m->model), b.where, "bodies." + b.name + ".material.model");
+    s.material.young_modulus = m->youngs_modulus;
+    s.material.poisson_ratio = m->poisson_ratio;
+    s.material.density = m->density;
+    s.velocity = b.velocity;
+    bodies.push_back(s);
+  }
+  return bodies;
+}
+
+Eigen::Vector3d loading_axis(const Scene& scene) {
+  for (const auto& b : scene.bodies)
+    if (b.role == BodyRole::driven) return b.velocity.normalized();
+  if (scene.gravity.norm() > 0) return scene.gravity.normalized();
+  return Eigen::Vector3d(0, 0, -1);
+}
+
+double end_time(const Scene& scene) {
+  if (scene.end.kind == EndCondition::time) return scene.end.value;
+  for (const auto& b : scene.bodies)
+    if (b.role == BodyRole::driven) return scene.end.value / b.velocity.norm();
+  throw InputError(scene.end.where, "run.end.plate_displacement", "needs a driven body");
+}
+
+}  // namespace latmpm

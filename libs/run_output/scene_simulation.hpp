@@ -1,0 +1,27 @@
+// From a scene to the solver's input: settings and body settings for mpm::Simulation.
+// The scene (libs/scene) is solver-agnostic data; this is the one place that maps its names
+// onto the solver's types.
+#pragma once
+#include <vector>
+
+#include "mpm/body.hpp"
+#include "mpm/settings.hpp"
+#include "scene/scene.hpp"
+
+namespace latmpm {
+
+mpm::Settings solver_settings(const Scene& scene, int threads);
+// One per scene body, in scene order. A fixed or driven body without a material takes the
+// density of the first deformable body (its motion is prescribed; the density only sets
+// the mass it reports).
+std::vector<mpm::BodySettings> solver_bodies(const Scene& scene);
+
+// The loading axis: the unit direction of the (first) driven body's velocity; without a
+// driven body, the direction of gravity; without gravity, -z. Loads in the series are
+// components along it, compression positive.
+Eigen::Vector3d loading_axis(const Scene& scene);
+// Simulated time at which the run ends (s): the end time, or the plate displacement
+// divided by the driven body's speed.
+double end_time(const Scene& scene);
+
+}  // namespace latmpm

@@ -1,0 +1,192 @@
+#include "run_output/solve_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "core/file_transfer.hpp"
+#include "core/progress.hpp"
+#include "mpm/simulation.hpp"
+#include "points/point_set.hpp"
+#include "run_output/run_log.hpp"
+#include "run_output/scene_simulation.hpp"
+#include "run_output/snapshot_writer.hpp"
+#include "run_output/solver_series.hpp"
+#include "scene/scene_points.hpp"
+
+namespace fs = std::filesystem;
+
+namespace latmpm {
+namespace {
+
+std::string format(const char* fmt, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, value);
+  return buf;
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  OutputFile out(path, path);
+  {
+    std::ofstream file(out.temp_path(), std::ios::trunc);
+    file << text;
+    if (!file.flush()) throw InputError(path, "", "cannot write (disk full?)");
+  }
+  out.commit();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& options)
+    : scene_(std::move(scene)), provenance_(std::move(provenance)), options_(options) {
+  PointSet points = load_scene_points(scene_, &provenance_);
+  if (std::abs(points.cell_size - scene_.cell_size) > 1e-9 * scene_.cell_size) {
+    std::ostringstream note;
+    note << "note: the points were made for a " << points.cell_size * 1e3 << " mm cell, the grid has "
+         << scene_.cell_size * 1e3 << " mm";
+    points_summary_ += note.str() + "\n";
+  }
+  std::vector<size_t> count(points.body_names.size(), 0);
+  for (int32_t b : points.body) ++count[b];
+  for (size_t b = 0; b < count.size(); ++b)
+    points_summary_ += "body " + points.body_names[b] + " (" + to_string(scene_.bodies[b].role) +
+                       "): " + std::to_string(count[b]) + " points\n";
+  simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
+                                                  solver_settings(scene_, options_.threads), scene_.where);
+}
+
+SolveRun::~SolveRun() = default;
+
+SolveSummary SolveRun::run(const std::string& run_dir) {
+  std::error_code ec;
+  fs::create_directories(run_dir, ec);
+  if (ec || !fs::is_directory(run_dir))
+    throw InputError(run_dir, "", "cannot create the run directory" + (ec ? ": " + ec.message() : ""));
+
+  // 1. What is run: the resolved scene and the head of the log.
+  write_text_atomically(run_dir + "/scene.toml",
+                        "# Resolved scene written by " + provenance_.tool + " " + provenance_.version +
+                            "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml);
+  RunLog log(run_dir + "/log.txt");
+  mpm::Simulation& sim = *simulation_;
+  const double end = end_time(scene_);
+  const Eigen::Vector3d axis = loading_axis(scene_);
+  const size_t particles = sim.particles().size();
+  log.line(provenance_.tool + " " + provenance_.version);
+  log.line("command: " + provenance_.command_line);
+  log.line("scene: " + scene_.source + " (resolved copy: scene.toml)");
+  for (const auto& f : scene_.point_files) log.line("points: " + f.path);
+  std::istringstream summary(points_summary_);
+  for (std::string l; std::getline(summary, l);) log.line(l);
+  log.line("grid: cell " + format("%g", scene_.cell_size) + " m, shape " + to_string(scene_.shape) +
+           ", scheme " + to_string(scene_.scheme) + ", flip " + format("%g", scene_.flip));
+  // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
+  // which the stepping loop below reports with everything saved.
+  const double stable = sim.stable_time_step();
+  const double dt0 = scene_.dt > 0 ? scene_.dt : stable;
+  log.line("time: " + (scene_.dt > 0 ? "fixed dt " + format("%g", scene_.dt) + " s"
+                                     : "cfl " + format("%g", scene_.cfl)) +
+           ", stable dt " + format("%.4g", stable) + " s at the start, mass scaling " +
+           format("%g", scene_.mass_scaling));
+  log.line("end: t = " + format("%g", end) + " s, about " + format("%.0f", std::ceil(end / dt0)) +
+           " steps" + (scene_.max_steps ? ", at most " + std::to_string(scene_.max_steps) : ""));
+  log.line("loading axis: (" + format("%g", axis.x()) + ", " + format("%g", axis.y()) + ", " +
+           format("%g", axis.z()) + "), record area " + format("%g", sim.record_area()) + " m^2");
+
+  // 2. The outputs, observing every step.
+  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", solver_series_columns(), provenance_);
+  SnapshotWriter snapshots(run_dir, provenance_);
+  series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
+  snapshots.write(solver_snapshot(sim));
+  series.save();
+
+  Progress progress(provenance_.tool, end, options_.progress);
+  const auto start = std::chrono::steady_clock::now();
+  double last_log = 0;
+  int64_t last_row_step = 0, last_snapshot_step = 0;
+  auto rate = [&] {
+    const double wall = seconds_since(start);
+    return wall > 0 ? double(particles) * double(sim.step_count()) / wall : 0.0;
+  };
+  auto status_text = [&] {
+    return "step " + std::to_string(sim.step_count()) + ", t = " + format("%.4g", sim.time()) + " s, " +
+           format("%.3g", rate()) + " particle-updates/s";
+  };
+  sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
+    if (d.step % scene_.series_every == 0) {
+      series.append(solver_series_row(s, d, axis));
+      last_row_step = d.step;
+    }
+    if (scene_.snapshot_every > 0 && d.step % scene_.snapshot_every == 0) {
+      snapshots.write(solver_snapshot(s));
+      series.save();
+      last_snapshot_step = d.step;
+    }
+    progress.update(d.time, status_text());
+    const double wall = seconds_since(start);
+    if (wall - last_log >= options_.log_interval_s) {
+      last_log = wall;
+      const double done = d.time / end;
+      log.line("progress: " + format("%.1f", 100 * done) + "%, " + status_text() + ", left ~" +
+               format_duration(done > 0 ? wall * (1 - done) / done : NAN));
+    }
+  });
+
+  // 3. Step to the end.
+  SolveSummary result;
+  result.status = "finished";
+  result.particles = particles;
+  try {
+    while (sim.time() < end * (1 - 1e-12)) {
+      if (scene_.max_steps > 0 && sim.step_count() >= scene_.max_steps) {
+        result.status = "max_steps";
+        break;
+      }
+      if (sim.time() + sim.next_time_step() >= end)
+        sim.run_until(end);  // the last step is shortened to land on the end time
+      else
+        sim.step();
+    }
+  } catch (const std::exception& e) {
+    // Keep everything readable: the series as far as it got, the state at the failure.
+    const bool numerical = dynamic_cast<const NumericalError*>(&e) != nullptr;
+    log.line(std::string("stopped: ") + (numerical ? "numerical failure: " : "error: ") + e.what());
+    try {
+      series.save();
+      // Apart from the time series: the failure may have struck mid-step, so this state
+      // need not be the whole state of any step.
+      log.line("state when the failure was detected (" + std::to_string(sim.step_count()) +
+               " steps completed): " + snapshots.write_separate(solver_snapshot(sim), "failure") +
+               ", failure.xmf");
+    } catch (const std::exception& save_error) {
+      log.line(std::string("could not save the state: ") + save_error.what());
+    }
+    log.line("status: failed steps=" + std::to_string(sim.step_count()) + " time=" +
+             format("%.9g", sim.time()) + " wall_s=" + format("%.3f", seconds_since(start)));
+    throw;
+  }
+
+  // 4. The final state, then the summary.
+  if (last_row_step != sim.step_count()) series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
+  if (last_snapshot_step != sim.step_count()) snapshots.write(solver_snapshot(sim));
+  series.save();
+  result.steps = sim.step_count();
+  result.simulated_time = sim.time();
+  result.wall_seconds = seconds_since(start);
+  result.updates_per_second = rate();
+  progress.finish(status_text());
+  log.line("status: " + result.status + " steps=" + std::to_string(result.steps) + " time=" +
+           format("%.9g", result.simulated_time) + " wall_s=" + format("%.3f", result.wall_seconds) +
+           " updates_per_s=" + format("%.4g", result.updates_per_second));
+  return result;
+}
+
+}  // namespace latmpm

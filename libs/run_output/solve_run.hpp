@@ -1,0 +1,55 @@
+// One latmpm-solve run, in the skeleton of a deal.II tutorial: set up, then run with output.
+//   SolveRun run(scene, provenance, options);  // reads points, builds the solver: every
+//                                              // InputError happens here, nothing written
+//   SolveSummary s = run.run("results/run1");   // writes RUN_DIR as it goes
+// RUN_DIR (created if missing; files of an earlier run replaced):
+//   scene.toml      the resolved scene (defaults filled in, paths absolute)
+//   log.txt         command, version, settings, progress lines, how the run ended
+//   series.csv/.h5  one row every output.series_every steps (solver_series.hpp)
+//   snapshots/snap_<step>.h5 + snapshots.xmf   particles for ParaView
+// On NumericalError (Stability): the log says why, the series is saved, the state at the
+// failure is snapshotted, then the error is rethrown (exit status 3).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "core/provenance.hpp"
+#include "scene/scene.hpp"
+
+namespace latmpm {
+
+namespace mpm {
+class Simulation;
+}
+
+struct SolveOptions {
+  int threads = 0;       // solver threads, 0 = all
+  bool progress = true;  // progress lines on stderr
+  double log_interval_s = 10;  // seconds between progress lines in log.txt
+};
+
+struct SolveSummary {
+  std::string status;  // "finished" or "max_steps"
+  int64_t steps = 0;
+  double simulated_time = 0;        // s
+  double wall_seconds = 0;          // the stepping loop, outputs included
+  double updates_per_second = 0;    // particles × steps / wall_seconds
+  size_t particles = 0;
+};
+
+class SolveRun {
+ public:
+  SolveRun(Scene scene, Provenance provenance, const SolveOptions& options);
+  ~SolveRun();
+  SolveSummary run(const std::string& run_dir);
+  const mpm::Simulation& simulation() const { return *simulation_; }
+
+ private:
+  Scene scene_;
+  Provenance provenance_;
+  SolveOptions options_;
+  std::unique_ptr<mpm::Simulation> simulation_;
+  std::string points_summary_;
+};
+
+}  // namespace latmpm

@@ -1,0 +1,68 @@
+#include "run_output/solver_series.hpp"
+
+namespace latmpm {
+
+std::vector<SeriesColumn> solver_series_columns() {
+  return {
+      {"step", "1", "steps completed"},
+      {"time", "s", "simulated time at the end of the step"},
+      {"dt", "s", "time step of the step"},
+      {"displacement", "m", "driven body's travel along the loading axis"},
+      {"load_driven", "N", "reaction on the driven bodies along the loading axis, compression positive"},
+      {"load_fixed", "N", "reaction on the fixed bodies against the loading axis, compression positive"},
+      {"load_record", "N", "record layer: -(mean vertical stress) x area (Paper A Sec. 5.1), compression positive"},
+      {"kinetic_energy", "J", "1/2 sum m v^2 over deformable points"},
+      {"strain_energy", "J", "sum V0 psi over deformable points"},
+      {"external_work", "J", "work of driven-body reactions and gravity on the deformable material since the start"},
+      {"max_speed", "m/s", "largest particle speed of deformable points"},
+  };
+}
+
+std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
+                                      const Eigen::Vector3d& axis) {
+  double displacement = 0, load_driven = 0, load_fixed = 0;
+  const auto& bodies = sim.bodies();
+  bool displacement_taken = false;
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const bool have = b < d.reaction.size();
+    const Eigen::Vector3d reaction = have ? Eigen::Vector3d(d.reaction[b]) : Eigen::Vector3d::Zero();
+    if (bodies[b].role == mpm::BodyRole::driven) {
+      load_driven += reaction.dot(axis);
+      if (!displacement_taken && b < d.body_displacement.size())
+        displacement = Eigen::Vector3d(d.body_displacement[b]).dot(axis);
+      displacement_taken = true;
+    } else if (bodies[b].role == mpm::BodyRole::fixed) {
+      load_fixed -= reaction.dot(axis);
+    }
+  }
+  return {double(d.step),   d.time,           d.dt,
+          displacement,     load_driven,      load_fixed,
+          -d.record_force,  d.kinetic_energy, d.strain_energy,
+          d.external_work,  d.max_speed};
+}
+
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) {
+  const mpm::Particles& p = sim.particles();
+  const size_t n = p.size();
+  ParticleSnapshot s;
+  s.step = sim.step_count();
+  s.time = sim.time();
+  s.resize(n);
+  for (const auto& b : sim.bodies()) s.body_names.push_back(b.name);
+  // Voigt (xx yy zz yz xz xy) to XDMF Tensor6 (xx xy xz yy yz zz).
+  constexpr int tensor6_from_voigt[6] = {0, 5, 4, 1, 3, 2};
+  for (size_t q = 0; q < n; ++q) {
+    const size_t i = p.id[q];
+    for (int k = 0; k < 3; ++k) {
+      s.position[3 * i + k] = p.position[q][k];
+      s.velocity[3 * i + k] = float(p.velocity[q][k]);
+    }
+    for (int k = 0; k < 6; ++k) s.stress[6 * i + k] = float(p.stress[q][tensor6_from_voigt[k]]);
+    s.von_mises[i] = float(p.von_mises_stress(q));
+    s.jacobian[i] = float(p.jacobian(q));
+    s.body[i] = p.body[q];
+  }
+  return s;
+}
+
+}  // namespace latmpm

@@ -1,0 +1,27 @@
+// What a solver step contributes to the run's outputs: the series columns (issue 5,
+// "Output": time, plate displacement, reactions on the driven plate and the fixed base,
+// record-layer force, energies, external work) and the particle snapshot.
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "mpm/simulation.hpp"
+#include "run_output/particle_snapshot.hpp"
+#include "run_output/series_writer.hpp"
+
+namespace latmpm {
+
+// step, time, dt, displacement, load_driven, load_fixed, load_record, kinetic_energy,
+// strain_energy, external_work, max_speed. Loads are components along the loading axis
+// (scene_simulation.hpp), compression positive:
+//   load_driven =  Σ_driven reaction · a   (the specimen resists the plate)
+//   load_fixed  = −Σ_fixed  reaction · a   (the base holds the specimen up)
+//   load_record = −A σ̄_zz of the record layer (Paper A Sec. 5.1, the GIMP runs' measure)
+std::vector<SeriesColumn> solver_series_columns();
+std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
+                                      const Eigen::Vector3d& axis);
+
+// The particles in their original point order (the solver re-sorts them), SI.
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim);
+
+}  // namespace latmpm

@@ -1,0 +1,232 @@
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/hdf5_file.hpp"
+#include "core/provenance.hpp"
+#include "run_output/snapshot_writer.hpp"
+#include "scene/scene.hpp"
+#include "tiny_column.hpp"
+
+using namespace latmpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("latmpm-solve-test-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    test::write_points(test::tiny_column({}), (d / "column.h5").string());
+    return d;
+  }();
+  return dir;
+}
+
+const std::string tiny_scene = R"([run]
+end = { plate_displacement = "0.2mm" }
+[grid]
+cell = "1mm"
+shape = "ugimp"
+[time]
+cfl = 0.3
+mass_scaling = 6
+[[points]]
+file = "column.h5"
+[bodies.column]
+role = "deformable"
+material = { E = "10MPa", nu = 0.4, density = "1050kg/m^3" }
+[bodies.bottom_plate]
+role = "fixed"
+[bodies.top_plate]
+role = "driven"
+velocity = ["0mm/s", "0mm/s", "-100mm/s"]
+[output]
+series_every = 25
+snapshot_every = 100
+)";
+
+std::string write_scene(const std::string& name, const std::string& text) {
+  const fs::path path = scratch() / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+struct ToolRun {
+  int status;
+  std::string err, out;
+};
+
+ToolRun run_solve(const std::string& args) {
+  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
+  const std::string cmd = std::string(LATMPM_BIN_DIR) + "/latmpm-solve " + args + " >" + out.string() +
+                          " 2>" + err.string();
+  const int raw = std::system(cmd.c_str());
+  auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err), slurp(out)};
+}
+
+std::vector<std::vector<double>> read_csv(const fs::path& path, std::vector<std::string>* header) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::stringstream hs(line);
+  for (std::string cell; std::getline(hs, cell, ',');) header->push_back(cell);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    rows.emplace_back();
+    for (std::string cell; std::getline(ls, cell, ',');) rows.back().push_back(std::stod(cell));
+  }
+  return rows;
+}
+
+size_t column(const std::vector<std::string>& header, const std::string& name) {
+  for (size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return i;
+  FAIL("no column " << name);
+  return 0;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("A run writes a consistent run directory", "[solve]") {
+  const std::string scene = write_scene("tiny.toml", tiny_scene);
+  const fs::path run = scratch() / "run-ok";
+  ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet --threads 1");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+
+  // The series: header with units, rows every 25 steps plus the last, plate travel v·t.
+  std::vector<std::string> header;
+  auto rows = read_csv(run / "series.csv", &header);
+  CHECK(header.front() == "step[1]");
+  const size_t step = column(header, "step[1]"), time = column(header, "time[s]");
+  const size_t disp = column(header, "displacement[m]"), driven = column(header, "load_driven[N]");
+  const size_t fixed = column(header, "load_fixed[N]"), work = column(header, "external_work[J]");
+  const size_t kinetic = column(header, "kinetic_energy[J]"), strain = column(header, "strain_energy[J]");
+  REQUIRE(rows.size() >= 3);
+  CHECK(rows.front()[step] == 0);
+  for (size_t i = 1; i + 1 < rows.size(); ++i) CHECK(rows[i][step] == 25.0 * i);
+  const auto& last = rows.back();
+  CHECK(last[time] == Approx(2e-3).epsilon(1e-9));        // 0.2 mm at 100 mm/s
+  CHECK(last[disp] == Approx(0.2e-3).epsilon(1e-9));
+  for (const auto& row : rows) CHECK(row[disp] == Approx(0.1 * row[time]).margin(1e-15));
+  // Compression loads the plate and the base alike (quasi-static: within 25 %), and the work
+  // put in is stored as strain and kinetic energy (explicit MPM with FLIP: within 10 %).
+  CHECK(last[driven] > 0);
+  CHECK(last[fixed] == Approx(last[driven]).epsilon(0.25));
+  CHECK(last[kinetic] + last[strain] == Approx(last[work]).epsilon(0.10));
+
+  // series.h5 holds the CSV's numbers, with provenance naming the scene and the points.
+  Hdf5File h5((run / "series.h5").string(), Hdf5File::Mode::read);
+  auto h5_time = h5.read_doubles("/series/time");
+  REQUIRE(h5_time.size() == rows.size());
+  CHECK(h5_time.back() == last[time]);
+  Provenance prov = read_provenance(h5);
+  CHECK(prov.tool == "latmpm-solve");
+  CHECK(prov.inputs.size() == 2);
+  REQUIRE_FALSE(prov.history.empty());
+  CHECK_THAT(prov.history.back(), Catch::Contains("tiny_column()"));
+
+  // Snapshots: step 0, every 100 steps and the last; every one lists every point.
+  const std::string xmf = read_text(run / "snapshots.xmf");
+  const size_t steps = size_t(last[step]);
+  size_t expected = 1 + steps / 100 + (steps % 100 ? 1 : 0);
+  size_t frames = 0;
+  for (size_t at = 0; (at = xmf.find("<Time ", at)) != std::string::npos; ++at) ++frames;
+  CHECK(frames == expected);
+  ParticleSnapshot first = read_snapshot((run / "snapshots/snap_000000.h5").string());
+  char name[32];
+  std::snprintf(name, sizeof name, "snapshots/snap_%06zu.h5", steps);
+  ParticleSnapshot final = read_snapshot((run / name).string());
+  REQUIRE(final.size() == first.size());
+  CHECK(final.time == Approx(2e-3));
+  // Point order is the input's: the top plate moved down by exactly the displacement.
+  const PointSet points = test::tiny_column({});
+  for (size_t i = 0; i < points.size(); ++i)
+    if (points.body[i] == 2) CHECK(final.position[3 * i + 2] - first.position[3 * i + 2] == Approx(-0.2e-3));
+
+  // The resolved scene runs as it is, and the log says how the run ended.
+  CHECK(run_solve((run / "scene.toml").string() + " --check").status == 0);
+  CHECK_THAT(read_text(run / "log.txt"), Catch::Contains("status: finished"));
+}
+
+TEST_CASE("Bad scenes exit with status 2 naming the line and key, writing nothing", "[solve]") {
+  auto [from, to, location] = GENERATE(table<std::string, std::string, std::string>({
+      {"E = \"10MPa\"", "E = \"10\"", "bad.toml:13: bodies.column.material.E"},
+      {"[bodies.top_plate]", "[bodies.top_plates]", "bad.toml:10: points.0.file"},
+      {"snapshot_every", "snapshot_evry", "bad.toml:21: output.snapshot_evry"},
+      {"role = \"fixed\"", "role = \"clamped\"", "bad.toml:15: bodies.bottom_plate.role"},
+  }));
+  std::string text = tiny_scene;
+  text.replace(text.find(from), from.size(), to);
+  const std::string scene = write_scene("bad.toml", text);
+  const fs::path run = scratch() / "run-bad";
+  fs::remove_all(run);
+  ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains(location));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(run));
+}
+
+TEST_CASE("Overrides on the command line are checked like the file", "[solve]") {
+  const std::string scene = write_scene("tiny.toml", tiny_scene);
+  ToolRun r = run_solve(scene + " --set grid.cel=1mm --check");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains("--set grid.cel=1mm: grid.cel: unknown key"));
+  ToolRun ok = run_solve(scene + " --set grid.shape=linear --check");
+  CHECK(ok.status == 0);
+  CHECK_THAT(ok.out, Catch::Contains("shape = 'linear'") || Catch::Contains("shape = \"linear\""));
+  CHECK(run_solve(scene).status == 1);  // neither -o nor --check
+}
+
+TEST_CASE("A run that blows up exits with status 3 and leaves readable outputs", "[solve]") {
+  // CFL number 1 is beyond what uGIMP with nu = 0.4 tolerates: the kinetic energy runs away
+  // within a few steps (the solver's runaway check, or a particle thrown off the grid).
+  const std::string scene = write_scene("blowup.toml", tiny_scene);
+  const fs::path run = scratch() / "run-blowup";
+  ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet --set output.series_every=1" +
+                        " --set output.snapshot_every=2 --set time.cfl=1");
+  INFO(r.err);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.err, Catch::Contains("numerical failure") && Catch::Contains("step"));
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  // Every completed step has its row, in the CSV and in series.h5.
+  std::vector<std::string> header;
+  auto rows = read_csv(run / "series.csv", &header);
+  CHECK(rows.size() >= 3);
+  CHECK(Hdf5File((run / "series.h5").string(), Hdf5File::Mode::read).read_doubles("/series/time").size() ==
+        rows.size());
+  const std::string log = read_text(run / "log.txt");
+  CHECK_THAT(log, Catch::Contains("stopped: numerical failure") && Catch::Contains("status: failed"));
+  // Every snapshot the XDMF series lists is whole, and so is the state at the failure.
+  const std::string xmf = read_text(run / "snapshots.xmf");
+  const size_t n = test::tiny_column({}).size();
+  int listed = 0;
+  for (size_t at = 0; (at = xmf.find("snapshots/snap_", at)) != std::string::npos; at = xmf.find('<', at)) {
+    CHECK(read_snapshot((run / xmf.substr(at, xmf.find(':', at) - at)).string()).size() == n);
+    ++listed;
+  }
+  CHECK(listed >= 6 * 2);  // at least two frames of 6 data items each
+  CHECK(read_snapshot((run / "snapshots/failure.h5").string()).size() == n);
+  CHECK(fs::exists(run / "failure.xmf"));
+}
