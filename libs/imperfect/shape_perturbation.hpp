@@ -4,8 +4,9 @@
 // Each type is a displacement field u(x) = a · s · f(x) · e: a shape f, an axis e (a horizontal
 // direction, or z for C) and the amount a. The scale s makes the largest displacement of any
 // moved point exactly |a| (the definition of "amount"): s = 1 / max_p |f(x_p)|, which
-// is 1 for A and differs from 1 by the sampling of the crest for the others (< 1e-3 for the
-// paper's point spacings). The exact fields are in docs/imperfections.md:
+// is 1 for A; for the others s − 1 is of order (point spacing / span), because points sit
+// up to half a spacing inside the material's extent and off the crest. The exact fields are
+// in docs/imperfections.md:
 //   A slant-top-layer  f = clamp((z − z_a) / h, 0, 1), z_a = lattice top − h   (lattice, top_plate)
 //   B slant-lattice    f = (z − z_lo) / (z_hi − z_lo), over the moved bodies    (every body)
 //   C curved-top-base  f = −c(ξ) · clamp((z − z_a) / h, 0, 1), axis z, c = clamp((ξ² − ξc²) / (1 − ξc²), 0, 1)
