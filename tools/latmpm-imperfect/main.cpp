@@ -31,8 +31,8 @@ order given; each is recorded in /imperfections and /provenance/history.
 
 Sample runs:
   $ latmpm-lattice --preset T1P40 -o t1p40.h5
-  $ latmpm-voxelize t1p40.h5 --cell 0.64mm --ppc 2 -o - | latmpm-imperfect - --type C --amount 1.28mm -o t1p40-C.h5
   $ latmpm-imperfect t1p40.h5 --strut-diameter-cov 5% --waviness 1% --seed 1 -o t1p40-defects.h5
+  $ latmpm-voxelize t1p40.h5 --cell 0.64mm --ppc 2 -o - | latmpm-imperfect - --type C --amount 1.28mm -o t1p40-C.h5
 )";
 
 int run(int argc, char** argv) {
