@@ -1,0 +1,20 @@
+// A closed triangle mesh as an OpenVDB narrow-band level set (tools::meshToLevelSet):
+// signed distance in metres, negative inside, interior resolved, voxel (i, j, k) centred at
+// (i, j, k)·voxel_size like strut_graph_level_set. The mesh must enclose a volume
+// (check_mesh(...).encloses_volume()): an open mesh breaks the inside/outside classification.
+#pragma once
+#include <openvdb/openvdb.h>
+
+#include <functional>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace latmpm {
+
+// `progress(fraction_done)` is called now and then. Throws InputError("voxelize", ...) for a
+// non-positive voxel size or band.
+openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_size_m,
+                                       double half_width_voxels = 3.0,
+                                       const std::function<void(double)>& progress = {});
+
+}  // namespace latmpm

@@ -1,0 +1,48 @@
+// Geometry → material points: the voxelizer's two entry points. A strut graph goes straight
+// to a level set of capsule distances (levelset/strut_level_set.hpp, no mesh in between), a
+// closed mesh through OpenVDB's meshToLevelSet; both are then sampled on the solver-aligned
+// point lattice (level_set_sampling.hpp). Validating inputs (mesh checks, resolution guard)
+// is the caller's job: these functions trust their input.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "geometry/strut_graph.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "points/point_set.hpp"
+
+namespace latmpm {
+
+struct VoxelizeOptions {
+  double cell_size = 0;      // h (m), > 0
+  int ppc = 2;               // points per cell per direction, ≥ 1
+  double voxel_size = 0;     // level-set voxel (m); 0 = automatic, Δ/2 with Δ = h/ppc
+  bool curvature_correction = true;
+  // Called with a stage name ("level set", "points") and the fraction of it done.
+  std::function<void(const std::string&, double)> progress;
+
+  double spacing() const { return cell_size / ppc; }
+  double resolved_voxel_size() const { return voxel_size > 0 ? voxel_size : 0.5 * spacing(); }
+  // Narrow-band half-width (voxels) the sampling needs: Δ/2 + √3 voxels, at least OpenVDB's 3.
+  double band_half_width() const;
+};
+
+struct Voxelized {
+  PointSet points;
+  double solid_volume = 0;  // m³: exact for a mesh, OpenVDB's level-set volume for a strut graph
+  double voxel_size = 0;    // m
+  size_t active_voxels = 0;
+  double level_set_seconds = 0, sampling_seconds = 0;
+};
+
+// Bodies: the graph's strut body and one per plate (plates win where they overlap struts);
+// tags "record", "bottom_layer", "top_layer" and one per plate (point_regions.hpp); the
+// graph's parameters are copied.
+Voxelized voxelize_strut_graph(const StrutGraph& graph, const VoxelizeOptions& options);
+
+// One body named `body_name`; tags "record", "bottom_layer", "top_layer".
+// The mesh must enclose a volume (check_mesh(mesh).encloses_volume()).
+Voxelized voxelize_mesh(const TriangleMesh& mesh, const std::string& body_name,
+                        const VoxelizeOptions& options);
+
+}  // namespace latmpm
