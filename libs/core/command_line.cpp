@@ -31,6 +31,9 @@ void CommandLine::alias(char letter, const std::string& name) {
 void CommandLine::positional(const std::string& name, const std::string& help, bool required) {
   declared_.push_back({name, "", help, "", Declared::positional, required});
 }
+void CommandLine::positional_list(const std::string& name, const std::string& help, bool required) {
+  declared_.push_back({name, "", help, "", Declared::positional, required, true});
+}
 
 const CommandLine::Declared* CommandLine::find(const std::string& name) const {
   for (const auto& d : declared_)
@@ -102,10 +105,14 @@ void CommandLine::parse(int argc, const char* const* argv) {
       throw UsageError("unknown option '" + arg + "' (options start with --; see " + tool_ + " --help)");
     if (next_positional >= positionals.size())
       throw UsageError("unexpected argument '" + arg + "' (see " + tool_ + " --help)");
+    if (positionals[next_positional]->many) {  // takes every remaining argument
+      values_[positionals[next_positional]->name].push_back(arg);
+      continue;
+    }
     values_[positionals[next_positional++]->name] = {arg};
   }
   for (; next_positional < positionals.size(); ++next_positional)
-    if (positionals[next_positional]->required)
+    if (positionals[next_positional]->required && !values_.count(positionals[next_positional]->name))
       throw UsageError("missing argument " + positionals[next_positional]->name + " (see " + tool_ +
                        " --help)");
 }
@@ -150,7 +157,7 @@ std::string CommandLine::help_text() const {
   if (!manual_.empty() && manual_.back() != '\n') os << "\n";
   os << "\nOptions:\n";
   for (const auto& d : declared_) {
-    std::string head = d.kind == Declared::positional ? "  " + d.name
+    std::string head = d.kind == Declared::positional ? "  " + d.name + (d.many ? "..." : "")
                        : d.kind == Declared::boolean  ? "  --" + d.name
                                                       : "  --" + d.name + " " + d.metavar;
     for (const auto& [letter, name] : aliases_)
@@ -175,7 +182,12 @@ std::string CommandLine::resolved() const {
   for (const auto& d : declared_) {
     auto it = values_.find(d.name);
     if (d.kind == Declared::positional) {
-      if (it != values_.end()) args.push_back(it->second.back());
+      if (it != values_.end()) {
+        if (d.many)
+          args.insert(args.end(), it->second.begin(), it->second.end());
+        else
+          args.push_back(it->second.back());
+      }
     } else if (d.kind == Declared::boolean) {
       if (it != values_.end()) args.push_back("--" + d.name);
     } else if (it != values_.end()) {

@@ -29,6 +29,8 @@ class CommandLine {
   void alias(char letter, const std::string& name);
   // A positional argument, in declaration order.
   void positional(const std::string& name, const std::string& help, bool required = true);
+  // The last positional: takes every remaining argument (e.g. RUN_DIR...); all(name) lists them.
+  void positional_list(const std::string& name, const std::string& help, bool required = true);
 
   // Throws HelpShown after printing --help/--version, UsageError on malformed input.
   void parse(int argc, const char* const* argv);
@@ -54,6 +56,7 @@ class CommandLine {
     std::string name, metavar, help, default_value;
     enum Kind { value, repeated, boolean, positional } kind;
     bool required = false;
+    bool many = false;  // positional_list
   };
   const Declared* find(const std::string& name) const;
   std::string display(const std::string& name) const;

@@ -1,0 +1,136 @@
+#include "post/compression_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "post/curve.hpp"
+
+namespace latmpm::post {
+
+namespace {
+
+std::string mm(double metres) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g mm", metres * 1e3);
+  return text;
+}
+
+// The first local maximum followed by a relative drop of at least `drop` before the curve
+// climbs above it again; returns the index or -1.
+long first_peak(const Curve& c, double drop) {
+  for (size_t k = 1; k + 1 < c.size(); ++k) {
+    if (!(c.y[k] >= c.y[k - 1] && c.y[k] > c.y[k + 1]) || c.y[k] <= 0) continue;
+    double lowest = c.y[k];
+    for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k]; ++j) lowest = std::min(lowest, c.y[j]);
+    if (lowest <= (1 - drop) * c.y[k]) return long(k);
+  }
+  return -1;
+}
+
+}  // namespace
+
+std::vector<double> efficiency_length(const std::vector<double>& u, const std::vector<double>& load) {
+  const std::vector<double> work = cumulative_trapezoid(Curve{u, load});
+  std::vector<double> eta(u.size(), std::nan(""));
+  for (size_t i = 0; i < u.size(); ++i)
+    if (load[i] > 0) eta[i] = work[i] / load[i];
+  return eta;
+}
+
+CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, double mass,
+                                       const CompressionSettings& s) {
+  CompressionMetrics m;
+  const Curve raw{h.displacement, h.load};
+  const Curve curve = monotone_prefix(raw);
+  if (curve.size() < 3 || !(curve.x.back() > curve.x.front())) {
+    m.notes.push_back("fewer than three rows of increasing travel: no compression metrics");
+    return m;
+  }
+  if (curve.size() < raw.size())
+    m.notes.push_back("the travel goes back after " + mm(curve.x.back()) + ": metrics use the curve up to there");
+  const double travel = curve.x.back();
+  m.final_displacement = travel;
+  const bool have_gauge = std::isfinite(gauge) && gauge > 0;
+
+  // Peak load over the series rows as written.
+  const size_t peak = argmax(curve.y);
+  m.peak_load = curve.y[peak];
+  m.peak_displacement = curve.x[peak];
+  for (size_t i = 0; i < h.displacement.size(); ++i)
+    if (h.displacement[i] == curve.x[peak] && h.load[i] == curve.y[peak]) {
+      m.peak_time = h.time[i];
+      break;
+    }
+
+  // The binned curve: solver oscillation averaged out, evenly spaced in u.
+  double bin = s.bin;
+  if (!(bin > 0)) bin = have_gauge ? 1e-3 * gauge : travel / 500;
+  bin = std::min(bin, (travel - curve.x.front()) / 10);
+  const Curve binned = bin_average(curve, curve.x.front(), travel, bin);
+
+  const long fp = first_peak(binned, s.first_peak_drop);
+  if (fp >= 0) {
+    m.first_peak_load = binned.y[size_t(fp)];
+    m.first_peak_displacement = binned.x[size_t(fp)];
+  } else {
+    m.notes.push_back("no first peak: the load never drops by " + std::to_string(int(s.first_peak_drop * 100)) +
+                      " % after a maximum");
+  }
+
+  // Initial stiffness: linear least squares over the initial range.
+  m.fit_from = std::isfinite(s.fit_from) ? s.fit_from : curve.x.front();
+  m.fit_to = std::isfinite(s.fit_to) ? s.fit_to
+             : fp >= 0              ? 0.5 * m.first_peak_displacement
+             : have_gauge           ? std::min(0.02 * gauge, travel)
+                                    : 0.1 * travel;
+  m.stiffness = fitted_slope(curve, m.fit_from, m.fit_to);
+  if (std::isnan(m.stiffness))
+    m.notes.push_back("initial stiffness: fewer than two rows in the fit range " + mm(m.fit_from) + " to " + mm(m.fit_to));
+
+  // Plateau (ISO 13314): mean load between two strains.
+  if (!have_gauge) {
+    m.notes.push_back("plateau load: no gauge length (lattice_zmin/zmax) to turn travel into strain");
+  } else {
+    m.plateau_from = s.plateau_from_strain * gauge;
+    m.plateau_to = s.plateau_to_strain * gauge;
+    if (travel >= m.plateau_to) {
+      m.plateau_load = interval_mean(curve, m.plateau_from, m.plateau_to);
+    } else {
+      char text[160];
+      std::snprintf(text, sizeof text, "plateau load: the run ends at %.3g %% strain, before %.3g %%",
+                    100 * travel / gauge, 100 * s.plateau_to_strain);
+      m.notes.push_back(text);
+    }
+  }
+
+  // Densification onset: maximum of the energy efficiency on the binned curve, over loads of
+  // at least 10 % of the peak (low-load troughs make W/F spike without meaning).
+  const std::vector<double> eta = efficiency_length(binned.x, binned.y);
+  long best = -1;
+  for (size_t i = 0; i < eta.size(); ++i)
+    if (std::isfinite(eta[i]) && binned.y[i] >= 0.1 * m.peak_load && (best < 0 || eta[i] > eta[size_t(best)]))
+      best = long(i);
+  if (best < 0 || size_t(best) + 1 >= eta.size()) {
+    m.notes.push_back("densification onset: not reached (the energy efficiency still rises at the end of the run)");
+  } else {
+    m.densification_displacement = binned.x[size_t(best)];
+    m.densification_load = binned.y[size_t(best)];
+    if (have_gauge) m.densification_strain = m.densification_displacement / gauge;
+  }
+
+  // Absorbed energy: work done on the specimen, ∫ F du.
+  const std::vector<double> work = cumulative_trapezoid(curve);
+  m.energy = work.back();
+  if (std::isfinite(m.densification_displacement))
+    m.energy_to_densification = interpolate(Curve{curve.x, work}, m.densification_displacement);
+  if (std::isfinite(mass) && mass > 0) {
+    m.sea = m.energy / mass;
+    m.sea_to_densification = m.energy_to_densification / mass;
+  } else {
+    m.notes.push_back("SEA: specimen mass unknown");
+  }
+  return m;
+}
+
+}  // namespace latmpm::post
