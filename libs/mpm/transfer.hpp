@@ -14,6 +14,7 @@
 #include "mpm/body.hpp"
 #include "mpm/bucket_buffer.hpp"
 #include "mpm/material_model.hpp"
+#include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/shape_functions.hpp"
 
@@ -104,7 +105,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         continue;
       }
       // Lane vectors: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz.
-      alignas(64) Real a[L] = {}, fx[L] = {}, fy[L] = {}, fz[L] = {};
+      NodeLanes a{}, fx{}, fy{}, fz{};
       const Real m = ps.mass[p];
       if constexpr (Mode::mass) a[lane::mass] = m;
       if constexpr (Mode::momentum_lane >= 0)
@@ -121,16 +122,15 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         for (int j = 0; j < N; ++j) {
           Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
           const Real wij = st.w[0][i] * st.w[1][j];
-          const Real dxij = st.dw[0][i] * st.w[1][j], dyij = st.w[0][i] * st.dw[1][j];
-          for (int k = 0; k < N; ++k) {
-            Real* node = row + k * L;
-            const Real w = wij * st.w[2][k];
-            if constexpr (Mode::force) {
-              const Real gx = dxij * st.w[2][k], gy = dyij * st.w[2][k], gz = wij * st.dw[2][k];
-              for (int c = 0; c < L; ++c) node[c] += w * a[c] + gx * fx[c] + gy * fy[c] + gz * fz[c];
-            } else {
-              for (int c = 0; c < L; ++c) node[c] += w * a[c];
-            }
+          if constexpr (Mode::force) {
+            // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
+            const NodeLanes row_w = wij * a + (st.dw[0][i] * st.w[1][j]) * fx + (st.w[0][i] * st.dw[1][j]) * fy;
+            const NodeLanes row_d = wij * fz;
+            for (int k = 0; k < N; ++k)
+              store_lanes(row + k * L, load_lanes(row + k * L) + st.w[2][k] * row_w + st.dw[2][k] * row_d);
+          } else {
+            const NodeLanes row_w = wij * a;
+            for (int k = 0; k < N; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[2][k] * row_w);
           }
         }
     }
@@ -190,26 +190,24 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
           for (uint32_t p = run.begin; p < run.end; ++p) {
             const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
             const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-            alignas(64) Real aw[L] = {}, ax[L] = {}, ay[L] = {}, az[L] = {};
+            // Sums over the stencil: aw = Σ S_i n_i, ax = Σ ∂xS_i n_i, ... for node lanes n_i.
+            // Per row (i, j): rw = Σ_k Sz_k n_k and rd = Σ_k Sz_k n_k, then weighted by Sx, Sy.
+            NodeLanes aw{}, ax{}, ay{}, az{};
             for (int i = 0; i < N; ++i)
               for (int j = 0; j < N; ++j) {
                 const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-                const Real wij = st.w[0][i] * st.w[1][j];
-                const Real dxij = st.dw[0][i] * st.w[1][j], dyij = st.w[0][i] * st.dw[1][j];
+                NodeLanes rw{}, rd{};
                 for (int k = 0; k < N; ++k) {
-                  const Real* node = row + k * L;
-                  const Real w = wij * st.w[2][k];
-                  if constexpr (gradient) {
-                    const Real gx = dxij * st.w[2][k], gy = dyij * st.w[2][k], gz = wij * st.dw[2][k];
-                    for (int c = 0; c < L; ++c) {
-                      aw[c] += w * node[c];
-                      ax[c] += gx * node[c];
-                      ay[c] += gy * node[c];
-                      az[c] += gz * node[c];
-                    }
-                  } else {
-                    for (int c = 0; c < L; ++c) aw[c] += w * node[c];
-                  }
+                  const NodeLanes n = load_lanes(row + k * L);
+                  rw += st.w[2][k] * n;
+                  if constexpr (gradient) rd += st.dw[2][k] * n;
+                }
+                const Real wij = st.w[0][i] * st.w[1][j];
+                aw += wij * rw;
+                if constexpr (gradient) {
+                  ax += (st.dw[0][i] * st.w[1][j]) * rw;
+                  ay += (st.w[0][i] * st.dw[1][j]) * rw;
+                  az += wij * rd;
                 }
               }
             const Real m = ps.mass[p];
@@ -234,8 +232,13 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               constexpr int g = Mode::gradient_lane;
               Mat3 grad_v;  // L_ab = Σ v_a ∂_b S
               grad_v << ax[g], ay[g], az[g], ax[g + 1], ay[g + 1], az[g + 1], ax[g + 2], ay[g + 2], az[g + 2];
+              // F ← F + dt L F, written out: Eigen's aliasing-safe product costs a temporary.
               Mat3& F = ps.deformation[p];
-              F += dt * grad_v * F;
+              const Mat3 F_old = F;
+              for (int row = 0; row < 3; ++row)
+                for (int col = 0; col < 3; ++col)
+                  F(row, col) += dt * (grad_v(row, 0) * F_old(0, col) + grad_v(row, 1) * F_old(1, col) +
+                                       grad_v(row, 2) * F_old(2, col));
               const Real J = F.determinant();
               if (!(J > 0)) note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
               SymTensor& s = ps.stress[p];

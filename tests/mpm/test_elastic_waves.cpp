@@ -1,0 +1,99 @@
+// Elastic waves: a step wave in a bar arrives at x/c, and a free bar vibrating in its first
+// axial mode has the period 2L/c, c = sqrt(E/ρ) (ν = 0, so bar and dilatational speeds
+// coincide and a one-cell cross-section needs no lateral correction).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "mpm/simulation.hpp"
+#include "point_builders.hpp"
+
+using namespace latmpm;
+using namespace latmpm::mpm;
+using namespace latmpm::mpm::test;
+
+namespace {
+constexpr Real young = 1e6, density = 1000;  // Pa, kg/m³ -> c = 31.62 m/s
+const Real wave_speed = std::sqrt(young / density);
+
+Settings settings_for(ShapeFunctionKind shape, Real h) {
+  Settings s;
+  s.cell_size = h;
+  s.shape_function = shape;
+  s.threads = 2;
+  return s;
+}
+
+// Mean axial velocity of the bar's points within half a cell of x.
+Real mean_velocity_near(const Particles& ps, Real x, Real h) {
+  Real sum = 0;
+  int n = 0;
+  for (size_t p = 0; p < ps.size(); ++p)
+    if (ps.body[p] == 0 && std::abs(ps.position[p][0] - x) < h / 2) sum += ps.velocity[p][0], ++n;
+  return n ? sum / n : 0;
+}
+}  // namespace
+
+TEST_CASE("A step wave in an elastic bar arrives at the speed set by modulus and density", "[mpm][waves]") {
+  const auto shape = GENERATE(ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline2,
+                              ShapeFunctionKind::bspline3);
+  const Real h = 1e-3, v0 = 0.01;  // m, m/s (v0 ≪ c: linear regime)
+  PointSet points = empty_point_set(h, 2);
+  add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(150 * h, h, h), "bar");
+  // The driven block's points touch the nodes up to x = 0: the bar is pushed from there.
+  add_points(points, Eigen::Vector3d(-2 * h, 0, 0), Eigen::Vector3d(0, h, h), "piston");
+  Simulation sim(points, {deformable("bar", elastic(young, 0, density)),
+                          rigid("piston", BodyRole::driven, Vec3(v0, 0, 0), density)},
+                 settings_for(shape, h));
+  const Real station = 100 * h, expected = station / wave_speed;
+  Real previous_t = 0, previous_v = 0, arrival = -1;
+  sim.add_observer([&](const Simulation& s, const StepDiagnostics& d) {
+    const Real v = mean_velocity_near(s.particles(), station, h);
+    if (arrival < 0 && v >= v0 / 2)
+      arrival = previous_t + (d.time - previous_t) * (v0 / 2 - previous_v) / (v - previous_v);
+    previous_t = d.time, previous_v = v;
+  });
+  sim.run_until(1.3 * expected);
+  INFO("shape " << to_string(shape) << ": arrival " << arrival << " s, expected " << expected << " s");
+  REQUIRE(arrival > 0);
+  CHECK(std::abs(arrival - expected) < 0.02 * expected);
+}
+
+TEST_CASE("A free elastic bar vibrates axially with the analytic period", "[mpm][waves]") {
+  const auto shape = GENERATE(ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::cpgimp,
+                              ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3);
+  const auto scheme = GENERATE(UpdateScheme::usl, UpdateScheme::musl, UpdateScheme::usf);
+  const Real h = 1e-3, length = 40 * h, v0 = 0.01;
+  PointSet points = empty_point_set(h, 2);
+  add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(length, h, h), "bar");
+  Settings s = settings_for(shape, h);
+  s.scheme = scheme;
+  Simulation sim(points, {deformable("bar", elastic(young, 0, density))}, s);
+  // First free–free mode: v(x, t) = v0 cos(πx/L) cos(ωt), ω = πc/L, period 2L/c.
+  for (size_t p = 0; p < sim.particles().size(); ++p)
+    sim.mutable_particles().velocity[p] = Vec3(v0 * std::cos(M_PI * sim.particles().position[p][0] / length), 0, 0);
+  // The momentum of the left half is ∝ cos(ωt): its zero crossings are half a period apart.
+  std::vector<Real> crossings;
+  Real previous_t = 0, previous_m = 1;
+  sim.add_observer([&](const Simulation& sm, const StepDiagnostics& d) {
+    const Particles& ps = sm.particles();
+    Real m = 0;
+    for (size_t p = 0; p < ps.size(); ++p)
+      if (ps.position[p][0] < length / 2) m += ps.mass[p] * ps.velocity[p][0];
+    if ((m > 0) != (previous_m > 0))
+      crossings.push_back(previous_t + (d.time - previous_t) * previous_m / (previous_m - m));
+    previous_t = d.time, previous_m = m;
+  });
+  const Real period = 2 * length / wave_speed;
+  sim.run_until(1.3 * period);
+  INFO("shape " << to_string(shape) << ", scheme " << to_string(scheme));
+  REQUIRE(crossings.size() >= 2);
+  const Real measured = 2 * (crossings[1] - crossings[0]);
+  INFO("period " << measured << " s, expected " << period << " s");
+  CHECK(std::abs(measured - period) < 0.02 * period);
+  // Energy stays bounded: kinetic + strain never exceeds the initial kinetic energy much.
+  const Real initial = 0.25 * density * length * h * h * v0 * v0;  // ½ ∫ ρ A v² dx
+  const auto& d = sim.last_diagnostics();
+  CHECK(d.kinetic_energy + d.strain_energy < 1.02 * initial);
+  CHECK(d.kinetic_energy + d.strain_energy > 0.9 * initial);
+}
