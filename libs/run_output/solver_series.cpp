@@ -32,12 +32,12 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
         displacement = Eigen::Vector3d(d.body_displacement[b]).dot(axis);
       displacement_taken = true;
     } else if (bodies[b].role == mpm::BodyRole::fixed) {
-      load_fixed -= reaction.dot(axis);
+      load_fixed = load_fixed - reaction.dot(axis);
     }
   }
   return {double(d.step),   d.time,           d.dt,
           displacement,     load_driven,      load_fixed,
-          -d.record_force,  d.kinetic_energy, d.strain_energy,
+          0.0 - d.record_force,  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
           d.external_work,  d.max_speed};
 }
 

@@ -221,7 +221,10 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::s
   check_consistency(s);
 
   std::ostringstream os;
-  os << toml::toml_formatter(document) << "\n";
+  // Shortest round-trip floats: "nu = 0.4", not 0.40000000000000002.
+  os << toml::toml_formatter(document, toml::toml_formatter::default_flags |
+                                           toml::format_flags::relaxed_float_precision)
+     << "\n";
   s.resolved_toml = os.str();
   return s;
 }
