@@ -104,13 +104,17 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
     }
   }
 
-  // Densification onset: maximum of the energy efficiency on the binned curve, over loads of
-  // at least 10 % of the peak (low-load troughs make W/F spike without meaning).
+  // Densification onset: maximum of the energy efficiency on the binned curve, over points
+  // whose load is at least 10 % of the largest load so far (deep troughs after a collapse
+  // make W/F spike without meaning).
   const std::vector<double> eta = efficiency_length(binned.x, binned.y);
   long best = -1;
-  for (size_t i = 0; i < eta.size(); ++i)
-    if (std::isfinite(eta[i]) && binned.y[i] >= 0.1 * m.peak_load && (best < 0 || eta[i] > eta[size_t(best)]))
+  double highest = 0;
+  for (size_t i = 0; i < eta.size(); ++i) {
+    highest = std::max(highest, binned.y[i]);
+    if (std::isfinite(eta[i]) && binned.y[i] >= 0.1 * highest && (best < 0 || eta[i] > eta[size_t(best)]))
       best = long(i);
+  }
   if (best < 0 || size_t(best) + 1 >= eta.size()) {
     m.notes.push_back("densification onset: not reached (the energy efficiency still rises at the end of the run)");
   } else {
