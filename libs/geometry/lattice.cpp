@@ -1,6 +1,7 @@
 #include "geometry/lattice.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include "core/errors.hpp"
@@ -108,6 +109,32 @@ LatticeSpec preset_lattice(const std::string& preset) {
   return spec;
 }
 
+std::array<int, 3> parse_cell_counts(const std::string& text) {
+  std::array<int, 3> counts{};
+  char x1 = 0, x2 = 0;
+  int consumed = 0;
+  const int fields = std::sscanf(text.c_str(), "%d%c%d%c%d%n", &counts[0], &x1, &counts[1], &x2,
+                                 &counts[2], &consumed);
+  if (fields != 5 || (x1 != 'x' && x1 != 'X') || (x2 != 'x' && x2 != 'X') ||
+      size_t(consumed) != text.size())
+    throw InputError("--cells", "", "'" + text + "' is not of the form NXxNYxNZ (e.g. 5x5x5)");
+  for (int c : counts)
+    if (c < 1) throw InputError("--cells", "", "every cell count must be at least 1, got '" + text + "'");
+  return counts;
+}
+
+Stacking parse_stacking(const std::string& text) {
+  if (text == "ABC" || text == "abc") return Stacking::abc;
+  if (text == "ACB" || text == "acb") return Stacking::acb;
+  throw InputError("--stacking", "", "unknown stacking '" + text + "' (known: ABC, ACB)");
+}
+
+Footprint parse_footprint(const std::string& text) {
+  if (text == "brick") return Footprint::brick;
+  if (text == "rhombic") return Footprint::rhombic;
+  throw InputError("--footprint", "", "unknown footprint '" + text + "' (known: brick, rhombic)");
+}
+
 void validate(const LatticeSpec& spec) {
   const CellType* cell = find_cell(spec.cell);
   if (!cell)
@@ -133,6 +160,9 @@ void validate(const LatticeSpec& spec) {
     throw InputError("--plate-margin", "", "must not be negative");
   if (spec.strut_diameter >= spec.strut_length)
     throw InputError("--strut-diameter", "", "must be smaller than the strut length");
+  if (spec.plate_thickness > 0 && spec.plate_thickness < spec.strut_diameter / 2)
+    throw InputError("--plates", "", "must be at least the strut radius (" + quantity_text(spec.strut_diameter / 2, "m") +
+                                         "), or the round strut ends poke through the plates");
 }
 
 StrutGraph build_lattice(const LatticeSpec& spec) {
@@ -142,7 +172,12 @@ StrutGraph build_lattice(const LatticeSpec& spec) {
   g.name = spec.name.empty() ? spec.cell : spec.name;
   g.strut_body = "lattice";
   centre_footprint(g);
-  if (spec.plate_thickness > 0) add_plates(g, spec.plate_thickness, spec.plate_margin);
+  if (spec.plate_thickness > 0) {
+    add_plates(g, spec.plate_thickness, spec.plate_margin);
+  } else {  // the solid, round ends included, starts at z = 0
+    const double lowest = solid_bounds(g).min().z();
+    for (auto& n : g.nodes) n.z() -= lowest;
+  }
   double zmin = INFINITY, zmax = -INFINITY;
   for (const auto& n : g.nodes) zmin = std::min(zmin, n.z()), zmax = std::max(zmax, n.z());
   auto& p = g.parameters;

@@ -21,7 +21,7 @@ struct LatticeSpec {
   std::array<int, 3> cells{5, 5, 5};  // tetrahedral: nodes per row, rows, layers
   Stacking stacking = Stacking::abc;       // tetrahedral only
   Footprint footprint = Footprint::brick;  // tetrahedral only
-  double plate_thickness = 0;  // m; 0: no plates
+  double plate_thickness = 0;  // m; 0: no plates; else at least the strut radius
   double plate_margin = 0;     // m the plates overhang the lattice on every side
 };
 
@@ -35,10 +35,16 @@ std::vector<std::string> preset_names();
 std::vector<std::string> cell_names();
 bool cell_uses_angle(const std::string& cell);
 
+// Option values in words; errors name the option (--cells, --stacking, --footprint).
+std::array<int, 3> parse_cell_counts(const std::string& text);  // "5x5x5"
+Stacking parse_stacking(const std::string& text);               // "ABC", "ACB"
+Footprint parse_footprint(const std::string& text);             // "brick", "rhombic"
+
 // Throws InputError naming the option for anything out of range.
 void validate(const LatticeSpec& spec);
 // The specimen: lattice between z = plate_thickness and plate_thickness + H, plates below and
-// above covering the lattice's footprint (struts included) plus plate_margin.
+// above covering the lattice's footprint (struts included) plus plate_margin. Without plates
+// the solid (round ends included) starts at z = 0.
 StrutGraph build_lattice(const LatticeSpec& spec);
 
 }  // namespace latmpm

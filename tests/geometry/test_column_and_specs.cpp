@@ -62,6 +62,7 @@ TEST_CASE("Bad specifications are refused naming the option", "[geometry]") {
       {[](LatticeSpec& s) { s.cell = "kagome"; }, "--cell"},
       {[](LatticeSpec& s) { s.cell = "bcc"; }, "--angle"},  // bcc takes no angle
       {[](LatticeSpec& s) { s.plate_thickness = -1e-3; }, "--plates"},
+      {[](LatticeSpec& s) { s.plate_thickness = 0.7e-3; }, "--plates"},  // thinner than r = 0.8 mm
   }));
   LatticeSpec spec = preset_lattice("T1P40");
   mutate(spec);

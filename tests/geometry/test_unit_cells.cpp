@@ -70,4 +70,10 @@ TEST_CASE("A periodic lattice with plates spans whole cells between them", "[geo
   CHECK(g.plates[1].max.y() == Approx(struts.max().y() + 1e-3));
   CHECK(g.plates[1].max.z() == Approx(4 * a + 4e-3));
   CHECK(count_bodies(g, 1e-9) == 1);
+
+  spec.plate_thickness = 0;  // without plates the solid, round ends included, starts at z = 0
+  const StrutGraph bare = build_lattice(spec);
+  CHECK(bare.plates.empty());
+  CHECK(std::abs(solid_bounds(bare).min().z()) < 1e-15);
+  CHECK(solid_bounds(bare).sizes().z() == Approx(4 * a + spec.strut_diameter));
 }
