@@ -9,8 +9,9 @@
 //   plateau load       mean F over strain [ε_1, ε_2] = [20 %, 30 %] of the gauge length
 //                      (ISO 13314 plateau stress × area; 30 % or 40 % by the standard)
 //   densification      the maximum of the energy efficiency η(u) = ∫₀ᵘ F du / (F(u) H)
-//                      (Tan et al. 2005, Li et al. 2006), over points with F ≥ 10 % of the
-//                      largest load so far
+//                      (Tan et al. 2005, J. Mech. Phys. Solids 53;
+//                      Li, Magkiriadis & Harrigan 2006, J. Cell. Plast. 42), over points
+//                      with F ≥ 10 % of the largest load so far
 //   absorbed energy    W = ∫ F du (trapezoid) to the end, and to the densification onset
 //   SEA                W / m, m the specimen's mass (real density, not mass-scaled)
 // Everything SI. A metric that cannot be had is NaN and `notes` says why.

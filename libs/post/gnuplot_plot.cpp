@@ -58,7 +58,7 @@ std::string gnuplot_script(const PlotSpec& p, const std::string& png_terminal) {
     << "set ylabel " << gnuplot_quote(p.y_label) << " noenhanced\n"
     << "set grid lc rgb \"#d0d0d0\"\n"
     // The legend below the axes, one entry per line: long run names never cover the curves.
-    << "set key at screen 0.08, screen 0.01 left bottom Left reverse noenhanced box maxcols 1\n"
+    << "set key at screen 0.08, screen 0.01 left bottom Left reverse noenhanced box width 2 maxcols 1\n"
     << "set bmargin " << 4 + (entries * 5 + 3) / 4 << "\n"
     << "set xzeroaxis lt -1 lw 0.5\n";
   for (size_t i = 0; i < p.series.size(); ++i)

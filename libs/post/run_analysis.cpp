@@ -24,8 +24,8 @@ TestKind choose_kind(const RunDirectory& run, const std::string& requested) {
   if (requested == "column") return TestKind::column;
   if (requested != "auto")
     throw InputError("--kind", "", "'" + requested + "' is not one of compression, impact, column, auto");
+  if (run.series.has("flyer_velocity")) return TestKind::impact;  // whatever the specimen
   if (run.specimen.cell == "column") return TestKind::column;
-  if (run.series.has("flyer_velocity")) return TestKind::impact;
   return TestKind::compression;
 }
 

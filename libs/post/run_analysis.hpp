@@ -36,8 +36,8 @@ struct RunAnalysis {
   std::vector<std::string> notes;  // the run's own (series, specimen) and the metrics' notes
 };
 
-// Kind "auto": column when the point files' parameters say cell = column, impact when the
-// series has flyer_velocity, compression otherwise. Load "" (automatic): for impact the first
+// Kind "auto": impact when the series has flyer_velocity, column when the point files'
+// parameters say cell = column, compression otherwise. Load "" (automatic): for impact the first
 // of load_flyer, load_fixed, load_driven, load_record present; otherwise the first of
 // load_driven, load_fixed, load_record that is not zero throughout.
 // Throws InputError(run path, option, problem) for an unknown kind or a load column the run

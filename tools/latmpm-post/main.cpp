@@ -40,7 +40,7 @@ stopped early by max_steps, which the summary marks incomplete):
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set grid.shape=bspline2 -o bspline2 --quiet
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set run.max_steps=800 -o short --quiet
   $ latmpm-post ugimp bspline2 short -o post --title "Tiny column, cell 0.8 mm"
-  $ cut -d, -f1-5,33-37 post/metrics.csv
+  $ cut -d, -f1,3,13,28-32 post/metrics.csv
   $ latmpm-post ugimp --label "uGIMP, base reaction=ugimp" --load load_fixed --kind compression -o post-base
   $ grep -A4 '^## Compression' post-base/summary.md
 )";
@@ -63,8 +63,8 @@ int post(int argc, char** argv) {
   cl.repeated_option("label", "NAME=RUN_DIR", "legend name of a run (default: the directory's name)");
   cl.option("load", "COLUMN", "series column used as the load: load_driven, load_fixed, load_record... "
                               "(default: load_driven, else the first non-zero one; impact: load_flyer, load_fixed...)");
-  cl.option("kind", "KIND", "compression, impact, column or auto (column: point files of cell 'column'; "
-                            "impact: series with flyer_velocity)", "auto");
+  cl.option("kind", "KIND", "compression, impact, column or auto (impact: series with flyer_velocity; "
+                            "column: point files of cell 'column')", "auto");
   cl.option("title", "TEXT", "title of the plots and the summary");
   cl.option("euler-k", "K", "effective-length factor of the column ends: 0.5 clamped-clamped, 0.7 clamped-pinned, "
                             "1 pinned-pinned, 2 clamped-free", "0.5");
