@@ -31,11 +31,15 @@ void write_text(const fs::path& out_dir, const std::string& relative, const std:
 
 std::string stem(const RunAnalysis& a) { return file_stem(a.run.label); }
 
-std::string load_axis_label(const std::vector<RunAnalysis>& runs) {
+bool mixed_load_columns(const std::vector<RunAnalysis>& runs) {
   std::set<std::string> columns;
   for (const auto& a : runs) columns.insert(a.load_column);
-  if (columns.size() == 1) return "load, " + *columns.begin() + " (N)";
-  return "load (N), column per run in summary.md";
+  return columns.size() > 1;
+}
+
+// The y label names the load column when all runs share it; otherwise each legend entry does.
+std::string load_axis_label(const std::vector<RunAnalysis>& runs) {
+  return mixed_load_columns(runs) ? "load (N)" : "load, " + runs.front().load_column + " (N)";
 }
 
 std::vector<PlotSpec> figures(const std::vector<RunAnalysis>& runs, const ReportContext& c) {
@@ -49,12 +53,14 @@ std::vector<PlotSpec> figures(const std::vector<RunAnalysis>& runs, const Report
   PlotSpec fv{"flyer_velocity", title + "flyer velocity vs time", "time (ms)", "flyer velocity (m/s)", {}, {}, head};
   PlotSpec fe{"flyer_energy", title + "flyer energy vs time", "time (ms)", "flyer energy (J)", {}, {}, head};
   std::set<std::string> euler_lines;
+  const bool mixed = mixed_load_columns(runs);
   for (const auto& a : runs) {
     if (a.run.series.rows() == 0) continue;
     const bool dashed = !complete(a.run.status);
     const std::string curves = "../curves/" + stem(a);
-    if (a.has_travel) ld.series.push_back({curves + ".load_displacement.csv", 1, 2, legend(a), dashed});
-    lt.series.push_back({curves + ".load_time.csv", 1, 2, legend(a), dashed});
+    const std::string load_legend = legend(a) + (mixed ? " [" + a.load_column + "]" : "");
+    if (a.has_travel) ld.series.push_back({curves + ".load_displacement.csv", 1, 2, load_legend, dashed});
+    lt.series.push_back({curves + ".load_time.csv", 1, 2, load_legend, dashed});
     const size_t n = a.history.time.size();
     const bool velocity = a.impact_history.velocity.size() == n;
     if (velocity) fv.series.push_back({curves + ".load_time.csv", 1, 3, legend(a), dashed});
