@@ -85,7 +85,9 @@ double uniform_voxel_size(const openvdb::FloatGrid& grid) {
                        std::fabs(size[2] - v) <= 1e-12 * v && (index - probe).length() < 1e-9 &&
                        xform.worldToIndex(openvdb::Vec3d(0.0)).length() < 1e-9;
   if (!uniform || !(v > 0))
-    throw InputError("voxelize", "level set", "transform is not a uniform scale about the origin");
+    throw InputError("voxelize", "level set",
+                     "transform is not a uniform scale about the origin (voxel " + std::to_string(v) +
+                         " m, origin at index " + std::to_string(xform.worldToIndex(openvdb::Vec3d(0.0))[0]) + ")");
   return v;
 }
 
