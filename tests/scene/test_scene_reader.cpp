@@ -168,9 +168,15 @@ TEST_CASE("--set overrides any field, parsing the value as TOML or else as text"
   CHECK(s.snapshot_every == 5);
   CHECK_THAT(s.resolved_toml, Catch::Contains("0.2mm"));
 
-  // Arrays are indexed by number, as in points.0.file.
-  Scene p = parse(base_scene, {"points.0.file=" + scratch_dir() + "/pts.h5"});
-  CHECK(p.point_files.size() == 1);
+  // Arrays are indexed by number, as in points.0.file; a relative path typed on the command
+  // line is relative to the current directory, not to the scene's.
+  const fs::path cwd = fs::current_path();
+  fs::current_path(fs::path(scratch_dir()).parent_path());
+  Scene p = parse_scene(base_scene, "scene.toml", "/nonexistent",
+                        {"points.0.file=" + fs::path(scratch_dir()).filename().string() + "/pts.h5"});
+  fs::current_path(cwd);
+  REQUIRE(p.point_files.size() == 1);
+  CHECK(p.point_files[0].path == (fs::path(scratch_dir()) / "pts.h5").string());
 }
 
 TEST_CASE("Errors in overridden values name the --set option", "[scene]") {
