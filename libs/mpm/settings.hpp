@@ -54,6 +54,9 @@ struct Settings {
   // beyond a floor of runaway_energy_floor (J) that ignores round-off at rest.
   Real runaway_energy_factor = 10;
   Real runaway_energy_floor = 1e-12;
+  // A particle whose volume ratio J = det F falls to this or below is inverted or crushed
+  // beyond anything an elastic solid survives (1 % of its volume): the run stops.
+  Real min_jacobian = 0.01;
 };
 
 // Throws InputError(where, field, ...) for a non-positive cell size, cfl outside (0, 1],

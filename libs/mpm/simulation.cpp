@@ -156,14 +156,15 @@ struct Simulation::Impl {
   template <class Shape, class Mode>
   void gather(Real dt) {
     const auto& list = buckets.buckets();
+    const GatherParameters parameters{settings().cell_size, dt, settings().flip_blend, settings().gravity,
+                                      settings().min_jacobian};
     tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       BucketBuffer& buffer = buffers.local();
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
         copy_box_from_grid(b, tables[bi], grid, buffer);
-        gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
-                                   settings().cell_size, dt, settings().flip_blend, settings().gravity,
+        gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
                                    buffer, tallies[bi], &run_tallies[b.run_begin]);
       }
     });
@@ -252,7 +253,8 @@ struct Simulation::Impl {
     switch (fault) {
       case ParticleFault::not_finite: msg << "has a NaN or infinite velocity, position or stress"; break;
       case ParticleFault::inverted:
-        msg << "is inverted or crushed (J = " << ps.deformation[p].determinant() << " <= 0)";
+        msg << "is inverted or crushed (J = " << ps.deformation[p].determinant() << " <= "
+            << settings().min_jacobian << ")";
         break;
       case ParticleFault::left_grid: msg << "left the grid (more than " << max_cell_coord << " cells from the origin)"; break;
       case ParticleFault::none: break;

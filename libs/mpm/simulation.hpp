@@ -7,7 +7,8 @@
 //   sim.add_observer([&](const Simulation& s, const StepDiagnostics& d) { ... });
 //   sim.run_until(0.015);                               // NumericalError if it goes unstable
 //
-// Every step throws NumericalError (naming step, particle and position) on NaN/Inf, J ≤ 0,
+// Every step throws NumericalError (naming step, particle and position) on NaN/Inf,
+// J ≤ Settings::min_jacobian (inverted or crushed),
 // a particle leaving the grid's coordinate range, a fixed time step above the stable limit,
 // or runaway kinetic energy. The state stays readable after the throw, so a caller can save
 // what it has.

@@ -142,10 +142,21 @@ inline void note_fault(BucketTally& t, ParticleFault f, uint32_t p) {
   if (t.fault == ParticleFault::none) t.fault = f, t.fault_particle = p;
 }
 
+// Step-wide inputs of a gather pass.
+struct GatherParameters {
+  Real h;             // cell size, m
+  Real dt;            // s
+  Real flip;          // FLIP share of the velocity update
+  Vec3 gravity;       // m/s²
+  Real min_jacobian;  // smallest J accepted
+};
+
 template <class Shape, class Mode>
 void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const BodyInfo* bodies,
-                   Real h, Real dt, Real flip, const Vec3& gravity, const BucketBuffer& buffer,
-                   BucketTally& tally, RunTally* run_tally) {
+                   const GatherParameters& par, const BucketBuffer& buffer, BucketTally& tally,
+                   RunTally* run_tally) {
+  const Real h = par.h, dt = par.dt, flip = par.flip;
+  const Vec3& gravity = par.gravity;
   constexpr int N = Shape::nodes_per_axis;
   constexpr int L = lane::count;
   constexpr bool gradient = Mode::gradient_lane >= 0;
@@ -240,7 +251,8 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   F(row, col) += dt * (grad_v(row, 0) * F_old(0, col) + grad_v(row, 1) * F_old(1, col) +
                                        grad_v(row, 2) * F_old(2, col));
               const Real J = F.determinant();
-              if (!(J > 0)) note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
+              if (!(J > par.min_jacobian))
+                note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
               SymTensor& s = ps.stress[p];
               material.update_stress(Deformation{grad_v, F, J, dt}, s);
               const Real energy = ps.volume0[p] * material.strain_energy_density(F, J, s);
