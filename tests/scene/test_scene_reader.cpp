@@ -155,7 +155,7 @@ TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
   }
 }
 
-TEST_CASE("--set overrides any field, parsing the value as TOML or else as text", "[scene]") {
+TEST_CASE("Command-line overrides reach any field, the value read as TOML or else as text", "[scene]") {
   Scene s = parse(base_scene, {"grid.cell=0.2mm", "time.mass_scaling=1", "grid.scheme=musl",
                                "bodies.top.velocity=[\"0m/s\",\"0m/s\",\"-0.05m/s\"]",
                                "run.end={ time = \"3ms\" }", "output.snapshot_every=5"});
