@@ -42,7 +42,9 @@ void sample_into(Voxelized& out, const openvdb::FloatGrid& level_set, const Voxe
   sampling.cell_size = o.cell_size;
   sampling.ppc = o.ppc;
   sampling.curvature_correction = o.curvature_correction;
-  out.points = sample_level_set(level_set, sampling, stage_progress(o, "points"));
+  SamplingStats stats;
+  out.points = sample_level_set(level_set, sampling, stage_progress(o, "points"), &stats);
+  out.dropped_volume = stats.dropped_volume;
   out.sampling_seconds = seconds_since(start);
 }
 

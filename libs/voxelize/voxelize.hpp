@@ -32,6 +32,7 @@ struct Voxelized {
   double solid_volume = 0;  // m³: exact for a mesh, OpenVDB's level-set volume for a strut graph
   double voxel_size = 0;    // m
   size_t active_voxels = 0;
+  double dropped_volume = 0;  // m³ of features thinner than a point spacing (level_set_sampling.hpp)
   double level_set_seconds = 0, sampling_seconds = 0;
 };
 

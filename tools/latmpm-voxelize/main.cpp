@@ -128,6 +128,12 @@ void print_summary(const latmpm::Voxelized& v, double seconds) {
                 "  volume: points %.6g mm^3, solid %.6g mm^3 (%+.3f %%)\n", total * 1e9,
                 v.solid_volume * 1e9, 100 * (total / v.solid_volume - 1));
   os << line;
+  if (v.dropped_volume > 0) {
+    std::snprintf(line, sizeof line,
+                  "  dropped: %.4g mm^3 in features thinner than a point spacing (no inside point)\n",
+                  v.dropped_volume * 1e9);
+    os << line;
+  }
   for (const auto& [name, mask] : p.tags) {
     size_t n = 0;
     for (uint8_t m : mask) n += m;
