@@ -10,7 +10,8 @@ StrutGraphBuilder::StrutGraphBuilder(double merge_tolerance) : tolerance_(merge_
 }
 
 int64_t StrutGraphBuilder::cell_key(int64_t i, int64_t j, int64_t k) const {
-  // 21 bits per axis: ±1e6 cells, far beyond any lattice at the tolerances used here.
+  // 21 bits per axis; indices beyond wrap around, which only makes unrelated nodes share a
+  // hash cell: node() compares actual distances, so merging stays exact.
   const int64_t mask = (int64_t(1) << 21) - 1;
   return ((i & mask) << 42) | ((j & mask) << 21) | (k & mask);
 }

@@ -88,7 +88,7 @@ openvdb::FloatGrid::Ptr strut_graph_level_set(const StrutGraph& graph, double vo
     for (int axis = 0; axis < 3; ++axis) {
       first[axis] = floor_div(int64_t(std::floor(lo[axis] / h)), leaf_dim);
       last[axis] = floor_div(int64_t(std::ceil(hi[axis] / h)), leaf_dim);
-      if (last[axis] - first[axis] > key_bias)
+      if (first[axis] <= -key_bias || last[axis] >= key_bias)
         throw std::invalid_argument("strut_graph_level_set: solid too large for this voxel size");
     }
     for (int64_t i = first[0]; i <= last[0]; ++i)

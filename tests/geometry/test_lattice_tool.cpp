@@ -62,6 +62,8 @@ TEST_CASE("Bad input exits 2 with one line naming the option and leaves no file"
       {"--column --diameter 2.4mm --length -16mm", "--length"},
       {"--preset T2P30 --stl missing-dir/x.stl", "--stl"},
       {"--preset T2P30 -o missing-dir/x.h5", "--output"},
+      {"--preset T2P30 --voxel 0mm", "--voxel"},
+      {"--preset T2P30 --voxel 1um", "--voxel"},  // 68 000 voxels across: refused, not attempted
   }));
   CAPTURE(args);
   const fs::path dir = scratch("bad");

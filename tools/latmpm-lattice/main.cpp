@@ -143,9 +143,14 @@ double smallest_radius(const latmpm::StrutGraph& g) {
   return r;
 }
 
-double positive_length(const latmpm::CommandLine& cl, const char* option) {
+// A voxel size for the solid: positive, and not so fine that the level set cannot be held.
+double voxel_size(const latmpm::CommandLine& cl, const char* option, const latmpm::StrutGraph& g) {
   const double value = cl.quantity(option, latmpm::dimension::length);
   if (!(value > 0)) throw latmpm::InputError(std::string("--") + option, "", "must be positive");
+  const double across = latmpm::solid_bounds(g).sizes().maxCoeff() / value;
+  if (across > 20000)
+    throw latmpm::InputError(std::string("--") + option, "",
+                             "too fine for this solid (" + std::to_string(long(across)) + " voxels across; at most 20000)");
   return value;
 }
 
@@ -212,9 +217,9 @@ int run(int argc, char** argv) {
   StrutGraph graph = cl.flag_set("column") ? column_from(cl) : lattice_from(cl);
   if (cl.given("name")) graph.name = cl.text("name");
   const double radius = smallest_radius(graph);
-  const double stl_voxel = cl.given("voxel") ? positive_length(cl, "voxel") : 2 * radius / 10;
+  const double stl_voxel = cl.given("voxel") ? voxel_size(cl, "voxel", graph) : 2 * radius / 10;
   const double summary_voxel =
-      cl.given("summary-voxel") ? positive_length(cl, "summary-voxel") : 2 * radius / 16;
+      cl.given("summary-voxel") ? voxel_size(cl, "summary-voxel", graph) : 2 * radius / 16;
   std::unique_ptr<OutputFile> h5_out, stl_out, step_out;
   if (cl.given("output")) h5_out = std::make_unique<OutputFile>(cl.text("output"), "--output");
   if (cl.given("stl")) stl_out = std::make_unique<OutputFile>(cl.text("stl"), "--stl");
