@@ -17,7 +17,7 @@ struct LinearElastic {
             m.density * mass_scaling};
   }
 
-  void update_stress(const Deformation& d, SymTensor& s) const {
+  [[gnu::always_inline]] void update_stress(const Deformation& d, SymTensor& s) const {
     const Mat3& L = d.velocity_gradient;
     const Real dt = d.dt;
     // D and W in components; the Voigt order is xx yy zz yz xz xy.

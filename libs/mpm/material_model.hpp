@@ -1,6 +1,9 @@
 // The closed set of constitutive models and the one place that dispatches over them.
 // Adding a model: one header like linear_elastic.hpp, one alternative here, one case in
-// make_material_model.
+// make_material_model. A model provides update_stress(Deformation, stress),
+// strain_energy_density(F, J, stress) (J/m³ of reference volume) and
+// wave_speed_squared(J) (m²/s², non-increasing in J: the solver evaluates it at the
+// smallest J of each body run).
 #pragma once
 #include <variant>
 

@@ -18,7 +18,7 @@ struct NeoHookean {
     return {m.lame_lambda(), m.shear_modulus(), m.density * mass_scaling};
   }
 
-  void update_stress(const Deformation& d, SymTensor& s) const {
+  [[gnu::always_inline]] void update_stress(const Deformation& d, SymTensor& s) const {
     const Mat3& F = d.f_new;
     const Mat3 b = F * F.transpose();
     const Real inv_j = 1 / d.jacobian;

@@ -211,7 +211,7 @@ struct Simulation::Impl {
 
   struct PassSums {
     Real kinetic = 0, strain = 0, gravity_power = 0, record_stress_volume = 0, record_volume = 0;
-    Real max_speed = 0, max_wave_speed_sq = 0;
+    Real max_speed_sq = 0, max_wave_speed_sq = 0;
   } sums;
 
   void absorb_tallies(bool velocity, bool position, bool gradient) {
@@ -224,12 +224,12 @@ struct Simulation::Impl {
       s.gravity_power += t.gravity_power;
       s.record_stress_volume += t.record_stress_volume;
       s.record_volume += t.record_volume;
-      s.max_speed = std::max(s.max_speed, t.max_speed);
+      s.max_speed_sq = std::max(s.max_speed_sq, t.max_speed_sq);
       s.max_wave_speed_sq = std::max(s.max_wave_speed_sq, t.max_wave_speed_sq);
     }
     if (velocity) {
       sums.kinetic = s.kinetic;
-      sums.max_speed = s.max_speed;
+      sums.max_speed_sq = s.max_speed_sq;
     }
     if (position) {
       sums.gravity_power = s.gravity_power;
@@ -468,12 +468,12 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.kinetic_energy = im.sums.kinetic;
   d.strain_energy = im.sums.strain;
   d.record_force = im.sums.record_volume > 0 ? record_area_ * im.sums.record_stress_volume / im.sums.record_volume : 0;
-  d.max_speed = im.sums.max_speed;
+  d.max_speed = std::sqrt(im.sums.max_speed_sq);
 
   Real driven_speed = 0;
   for (const auto& b : im.body_info)
     if (b.role == BodyRole::driven) driven_speed = std::max(driven_speed, b.velocity.norm());
-  im.max_speed = std::max(im.sums.max_speed, driven_speed);
+  im.max_speed = std::max(d.max_speed, driven_speed);
   if (im.sums.max_wave_speed_sq > 0) im.max_wave_speed = std::sqrt(im.sums.max_wave_speed_sq);
 
   const Real budget = std::max(im.initial_energy + d.external_work, Real(0));

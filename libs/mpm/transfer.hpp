@@ -9,6 +9,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "mpm/body.hpp"
@@ -50,7 +51,8 @@ enum class ParticleFault { none, not_finite, inverted, left_grid };
 struct BucketTally {
   Real kinetic = 0, strain = 0, gravity_power = 0;
   Real record_stress_volume = 0, record_volume = 0;
-  Real max_speed = 0, max_wave_speed_sq = 0;
+  Real max_speed_sq = 0;  // m²/s²
+  Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
   bool drifted = false;
   ParticleFault fault = ParticleFault::none;
@@ -198,6 +200,9 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     }
     std::visit(
         [&](const auto& material) {
+          // Wave speeds grow as J falls (never the other way), so the run's smallest J
+          // gives its largest wave speed: one evaluation per run instead of per particle.
+          Real min_j = std::numeric_limits<Real>::infinity();
           for (uint32_t p = run.begin; p < run.end; ++p) {
             const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
             const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
@@ -229,7 +234,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               v = flip * (v + dv) + (1 - flip) * v_grid;
               const Real speed_sq = v.squaredNorm();
               tally.kinetic += Real(0.5) * m * speed_sq;
-              tally.max_speed = std::max(tally.max_speed, std::sqrt(speed_sq));
+              tally.max_speed_sq = std::max(tally.max_speed_sq, speed_sq);
               if (!std::isfinite(speed_sq)) note_fault(tally, ParticleFault::not_finite, p);
             }
             if constexpr (Mode::position) {
@@ -258,7 +263,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               const Real energy = ps.volume0[p] * material.strain_energy_density(F, J, s);
               if (!std::isfinite(energy)) note_fault(tally, ParticleFault::not_finite, p);
               tally.strain += energy;
-              tally.max_wave_speed_sq = std::max(tally.max_wave_speed_sq, material.wave_speed_squared(J));
+              min_j = std::min(min_j, J);
               if (ps.flags[p] & Particles::record_flag) {
                 const Real volume = J * ps.volume0[p];
                 tally.record_stress_volume += s[2] * volume;
@@ -266,6 +271,9 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               }
             }
           }
+          if constexpr (gradient)
+            if (run.end > run.begin)
+              tally.max_wave_speed_sq = std::max(tally.max_wave_speed_sq, material.wave_speed_squared(min_j));
         },
         body.model);
   }
