@@ -101,4 +101,25 @@ StepReport write_step(const StrutGraph& graph, const std::string& path, bool ver
   return report;
 }
 
+StepContents read_step_contents(const std::string& path) {
+  StepContents contents;
+  try {
+    GmshSession session;
+    gmsh::vectorpair shapes;
+    gmsh::model::occ::importShapes(path, shapes, true, "step");
+    for (const auto& [dim, tag] : shapes) {
+      if (dim != 3) continue;
+      double mass = 0;
+      gmsh::model::occ::getMass(dim, tag, mass);
+      contents.volume += mass * 1e-9;  // mm³ → m³
+      ++contents.solids;
+    }
+  } catch (const std::exception& e) {
+    throw InputError(path, "STEP", std::string("gmsh/OpenCASCADE cannot read it: ") + e.what());
+  } catch (...) {
+    throw InputError(path, "STEP", "gmsh/OpenCASCADE cannot read it");
+  }
+  return contents;
+}
+
 }  // namespace latmpm

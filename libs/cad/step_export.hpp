@@ -20,4 +20,11 @@ struct StepReport {
 // Throws InputError(path, ...) when gmsh fails.
 StepReport write_step(const StrutGraph& graph, const std::string& path, bool verbose = false);
 
+// What a STEP file holds, measured exactly by OpenCASCADE: for checking an export.
+struct StepContents {
+  size_t solids = 0;  // separate 3D bodies (1 for a fused, connected specimen)
+  double volume = 0;  // m³, total (the file is read in millimetres)
+};
+StepContents read_step_contents(const std::string& path);
+
 }  // namespace latmpm

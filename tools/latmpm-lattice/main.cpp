@@ -185,7 +185,7 @@ void print_summary(const latmpm::StrutGraph& g, const latmpm::SolidMeasures& m, 
   char line[256];
   std::snprintf(line, sizeof line,
                 "  solid volume  %.1f mm^3 (plates %.1f mm^3, lattice %.1f mm^3); level set at %s mm voxels, "
-                "estimated error +%.1f %%\n",
+                "estimated error within +-%.1f %%\n",
                 m.solid_volume * 1e9, m.plate_volume * 1e9, m.lattice_volume * 1e9,
                 millimetres(m.voxel_size).c_str(), 100 * expected_volume_error(m.voxel_size, radius));
   os << line;
