@@ -1,5 +1,6 @@
 #include "geometry/lattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
