@@ -1,5 +1,6 @@
 #include "core/file_transfer.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -24,6 +25,13 @@ std::string make_temp_in(const std::string& dir, const std::string& stem) {
   if (fd < 0) return "";
   ::close(fd);
   return std::string(buf.data());
+}
+
+// mkstemp creates files with mode 0600; a finished output gets the usual 0666 & ~umask.
+void apply_umask_permissions(const std::string& path) {
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(path.c_str(), 0666 & ~mask);
 }
 
 std::string temp_dir() {
@@ -63,8 +71,10 @@ void OutputFile::commit() {
     std::cout.flush();
     std::remove(temp_.c_str());
     if (!std::cout) throw InputError(option_, "", "cannot write to standard output");
-  } else if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
-    throw InputError(option_, "", "cannot rename the finished file to '" + target_ + "'");
+  } else {
+    apply_umask_permissions(temp_);
+    if (std::rename(temp_.c_str(), target_.c_str()) != 0)
+      throw InputError(option_, "", "cannot rename the finished file to '" + target_ + "'");
   }
   committed_ = true;
 }

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -102,5 +104,9 @@ TEST_CASE("Output files appear only on commit", "[core][files]") {
     out.commit();
   }
   CHECK(fs::exists(target));
+  // Finished files get the usual permissions (0666 less the umask), not mkstemp's 0600.
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  CHECK((fs::status(target).permissions() & fs::perms::all) == static_cast<fs::perms>(0666 & ~mask));
   CHECK_THROWS_WITH(OutputFile("/nonexistent-dir/x.h5", "-o"), Catch::Contains("does not exist"));
 }
