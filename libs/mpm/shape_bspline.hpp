@@ -13,10 +13,12 @@ struct Bspline2Shape {
   static constexpr int reach_above = 2;
   static constexpr bool uses_half_size = false;
   static constexpr bool stretches_with_f = false;
-  static void weights_1d(Real xi, Real /*half*/, int& base, Real* w, Real* dw) {
-    base = floor_to_int(xi - Real(0.5));
-    const Real f = xi - base;
-    const Real a = Real(1.5) - f, b = f - 1, c = f - Real(0.5);
+
+  template <class T, class I>
+  static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
+    base = num::floor_to_int(xi - Real(0.5));
+    const T f = xi - num::to_real(base);
+    const T a = Real(1.5) - f, b = f - 1, c = f - Real(0.5);
     w[0] = Real(0.5) * a * a;
     w[1] = Real(0.75) - b * b;
     w[2] = Real(0.5) * c * c;
@@ -33,9 +35,11 @@ struct Bspline3Shape {
   static constexpr int reach_above = 2;
   static constexpr bool uses_half_size = false;
   static constexpr bool stretches_with_f = false;
-  static void weights_1d(Real xi, Real /*half*/, int& base, Real* w, Real* dw) {
-    base = floor_to_int(xi) - 1;
-    const Real t = xi - base - 1, t2 = t * t, t3 = t2 * t, s = 1 - t;
+
+  template <class T, class I>
+  static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
+    base = num::floor_to_int(xi) - 1;
+    const T t = xi - num::to_real(base) - 1, t2 = t * t, t3 = t2 * t, s = 1 - t;
     constexpr Real sixth = Real(1) / 6;
     w[0] = sixth * s * s * s;
     w[1] = sixth * (3 * t3 - 6 * t2 + 4);

@@ -13,13 +13,14 @@ struct LinearShape {
   static constexpr bool uses_half_size = false;
   static constexpr bool stretches_with_f = false;
 
-  static void weights_1d(Real xi, Real /*half*/, int& base, Real* w, Real* dw) {
-    base = floor_to_int(xi);
-    const Real f = xi - base;  // in [0, 1)
+  template <class T, class I>
+  static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
+    base = num::floor_to_int(xi);
+    const T f = xi - num::to_real(base);  // in [0, 1)
     w[0] = 1 - f;
     w[1] = f;
-    dw[0] = -1;
-    dw[1] = 1;
+    dw[0] = num::constant<T>(-1);
+    dw[1] = num::constant<T>(1);
   }
 };
 

@@ -579,9 +579,9 @@ Simulation::Gathered Simulation::gather_from_grid() const {
             for (int k = 0; k < N; ++k) {
               const Real* node = buffer.data.data() + buffer.offset(st.base[0] + i, st.base[1] + j, st.base[2] + k);
               const Vec3 vi(node[lane::momentum], node[lane::momentum + 1], node[lane::momentum + 2]);
-              const Real w = st.w[0][i] * st.w[1][j] * st.w[2][k];
-              const Vec3 dw(st.dw[0][i] * st.w[1][j] * st.w[2][k], st.w[0][i] * st.dw[1][j] * st.w[2][k],
-                            st.w[0][i] * st.w[1][j] * st.dw[2][k]);
+              const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+              const Vec3 dw(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
+                            st.w[i][0] * st.w[j][1] * st.dw[k][2]);
               v += w * vi;
               grad += vi * dw.transpose();
             }

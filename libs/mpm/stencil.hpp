@@ -1,35 +1,73 @@
-// The per-particle stencil every shape function produces: for each axis the first node
-// index and the 1D weights and derivatives of the N nodes from there. The 3D shape function
-// is the tensor product S_i = Sx·Sy·Sz and ∇S_i = (Sx'·Sy·Sz, Sx·Sy'·Sz, Sx·Sy·Sz'), so
-// P2G and G2P share one small stencil instead of N³ stored weights.
+// The per-particle stencil every shape function produces: the first node index per axis,
+// and for each of the N nodes along an axis the 1D weight and derivative — kept for the
+// three axes side by side in one small SIMD value, so a policy computes all three axes in
+// one pass. The 3D shape function is the tensor product S = Sx·Sy·Sz and
+// ∇S = (Sx'·Sy·Sz, Sx·Sy'·Sz, Sx·Sy·Sz'), so P2G and G2P share one small stencil instead of
+// N³ stored weights.
+//
+// Shape policies write their 1D formulas once, as templates over the number type T: plain
+// Real (tests, reference) or Axes (x, y, z and one spare lane), with the helpers below.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "mpm/real.hpp"
 
 namespace latmpm::mpm {
 
+typedef Real Axes __attribute__((vector_size(4 * sizeof(Real))));
+typedef int32_t AxesInt __attribute__((vector_size(4 * sizeof(int32_t))));
+
+namespace num {
+inline Real max(Real a, Real b) { return std::max(a, b); }
+inline Axes max(Axes a, Axes b) { return a > b ? a : b; }
+inline Real min(Real a, Real b) { return std::min(a, b); }
+inline Axes min(Axes a, Axes b) { return a < b ? a : b; }
+inline Real abs(Real a) { return std::abs(a); }
+inline Axes abs(Axes a) { return a < 0 ? -a : a; }
+inline Real clamp(Real a, Real lo, Real hi) { return std::clamp(a, lo, hi); }
+inline Axes clamp(Axes a, Real lo, Real hi) { return min(max(a, Axes{} + lo), Axes{} + hi); }
+// Integer part towards −∞.
+inline int floor_to_int(Real x) { return static_cast<int>(std::floor(x)); }
+inline AxesInt floor_to_int(Axes x) {
+  const AxesInt truncated = __builtin_convertvector(x, AxesInt);
+  // Truncation rounds negative non-integers up: step those down by one (true is −1).
+  return truncated + __builtin_convertvector(__builtin_convertvector(truncated, Axes) > x, AxesInt);
+}
+inline Real to_real(int i) { return Real(i); }
+inline Axes to_real(AxesInt i) { return __builtin_convertvector(i, Axes); }
+template <class T>
+inline T constant(Real c) {
+  if constexpr (std::is_same_v<T, Real>) return c;
+  else return T{} + c;
+}
+}  // namespace num
+
+inline int floor_to_int(Real x) { return num::floor_to_int(x); }
+
 template <int N>
 struct Stencil {
   static constexpr int nodes_per_axis = N;
-  int base[3];     // node index (grid coordinates) of the stencil's first node per axis
-  Real w[3][N];    // 1D weights, dimensionless
-  Real dw[3][N];   // 1D derivatives dS/dx, 1/m
+  int base[3];  // node index (grid coordinates) of the stencil's first node per axis
+  Axes w[N];    // w[k][a]: weight of the k-th node along axis a, dimensionless
+  Axes dw[N];   // dw[k][a]: its derivative dS/dx_a, 1/m
 };
 
-// Integer part towards −∞ that is exact for the grid coordinates the solver uses.
-inline int floor_to_int(Real x) { return static_cast<int>(std::floor(x)); }
-
-// Fills a Stencil from a 1D policy applied per axis. Shape::weights_1d(xi, half, base, w,
-// dw) receives the coordinate in cell units (x/h) and the half-size in cell units, and
-// returns the first node and weights with derivatives in cell units (multiplied by 1/h here).
+// Fills a Stencil from a shape policy: Shape::weights(xi, half, base, w, dw) receives the
+// coordinates in cell units (x/h) and the half-sizes in cell units, and returns the first
+// nodes and the weights with derivatives in cell units (multiplied by 1/h here).
 template <class Shape>
 inline Stencil<Shape::nodes_per_axis> make_stencil(const Vec3& x, const Vec3& half, Real inv_h) {
-  Stencil<Shape::nodes_per_axis> s;
-  for (int a = 0; a < 3; ++a) {
-    Shape::weights_1d(x[a] * inv_h, half[a] * inv_h, s.base[a], s.w[a], s.dw[a]);
-    for (int k = 0; k < Shape::nodes_per_axis; ++k) s.dw[a][k] *= inv_h;
-  }
+  constexpr int N = Shape::nodes_per_axis;
+  Stencil<N> s;
+  // The spare lane gets a harmless position and half-size (no division by zero).
+  const Axes xi = {x[0] * inv_h, x[1] * inv_h, x[2] * inv_h, Real(0.5)};
+  const Axes hv = {half[0] * inv_h, half[1] * inv_h, half[2] * inv_h, Real(0.25)};
+  AxesInt base;
+  Shape::weights(xi, hv, base, s.w, s.dw);
+  for (int a = 0; a < 3; ++a) s.base[a] = base[a];
+  for (int k = 0; k < N; ++k) s.dw[k] *= inv_h;
   return s;
 }
 

@@ -100,7 +100,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         for (int i = 0; i < N; ++i)
           for (int j = 0; j < N; ++j)
             for (int k = 0; k < N; ++k)
-              if (st.w[0][i] * st.w[1][j] * st.w[2][k] > 0) {
+              if (st.w[i][0] * st.w[j][1] * st.w[k][2] > 0) {
                 Real& c = first[i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L + lane::constraint];
                 c = std::max(c, marker);
               }
@@ -123,16 +123,16 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
       for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j) {
           Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-          const Real wij = st.w[0][i] * st.w[1][j];
+          const Real wij = st.w[i][0] * st.w[j][1];
           if constexpr (Mode::force) {
             // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
-            const NodeLanes row_w = wij * a + (st.dw[0][i] * st.w[1][j]) * fx + (st.w[0][i] * st.dw[1][j]) * fy;
+            const NodeLanes row_w = wij * a + (st.dw[i][0] * st.w[j][1]) * fx + (st.w[i][0] * st.dw[j][1]) * fy;
             const NodeLanes row_d = wij * fz;
             for (int k = 0; k < N; ++k)
-              store_lanes(row + k * L, load_lanes(row + k * L) + st.w[2][k] * row_w + st.dw[2][k] * row_d);
+              store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
           } else {
             const NodeLanes row_w = wij * a;
-            for (int k = 0; k < N; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[2][k] * row_w);
+            for (int k = 0; k < N; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
           }
         }
     }
@@ -215,14 +215,14 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 NodeLanes rw{}, rd{};
                 for (int k = 0; k < N; ++k) {
                   const NodeLanes n = load_lanes(row + k * L);
-                  rw += st.w[2][k] * n;
-                  if constexpr (gradient) rd += st.dw[2][k] * n;
+                  rw += st.w[k][2] * n;
+                  if constexpr (gradient) rd += st.dw[k][2] * n;
                 }
-                const Real wij = st.w[0][i] * st.w[1][j];
+                const Real wij = st.w[i][0] * st.w[j][1];
                 aw += wij * rw;
                 if constexpr (gradient) {
-                  ax += (st.dw[0][i] * st.w[1][j]) * rw;
-                  ay += (st.w[0][i] * st.dw[1][j]) * rw;
+                  ax += (st.dw[i][0] * st.w[j][1]) * rw;
+                  ay += (st.w[i][0] * st.dw[j][1]) * rw;
                   az += wij * rd;
                 }
               }
