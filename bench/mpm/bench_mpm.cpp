@@ -29,6 +29,11 @@ PointSet elastic_block(int cells, double h, int ppc) {
   ps.body_names = {"block"};
   const int n = cells * ppc;
   const double s = h / ppc;
+  const size_t count = size_t(n) * n * n;
+  ps.position.reserve(count);
+  ps.volume.reserve(count);
+  ps.body.reserve(count);
+  ps.half_size.reserve(count);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) {
