@@ -1,14 +1,32 @@
 // What a material model sees of a particle's motion over one step: never the particle.
+// T is Real for one particle or Pack for eight particles updated together (one lane each);
+// models write their formulas once, as templates over T.
 #pragma once
 #include "mpm/real.hpp"
+#include "mpm/simd.hpp"
 
 namespace latmpm::mpm {
 
+template <class T>
 struct Deformation {
-  const Mat3& velocity_gradient;  // L = Σ v_i ⊗ ∇S_i over the step, 1/s
-  const Mat3& f_new;              // F at the end of the step, F_new = (I + dt L) F_old
-  Real jacobian;                  // J = det F_new
-  Real dt;                        // s
+  T velocity_gradient[3][3];  // L_ab = ∂v_a/∂x_b over the step, 1/s
+  T f_new[3][3];              // F at the end of the step, F_new = (I + dt L) F_old
+  T jacobian;                 // J = det F_new
+  Real dt;                    // s
 };
+
+// Cauchy stress in Voigt order xx yy zz yz xz xy, Pa.
+template <class T>
+using Stress = T[6];
+
+// For one particle from Eigen types (set-up, tests).
+inline Deformation<Real> make_deformation(const Mat3& L, const Mat3& F, Real dt) {
+  Deformation<Real> d;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) d.velocity_gradient[a][b] = L(a, b), d.f_new[a][b] = F(a, b);
+  d.jacobian = F.determinant();
+  d.dt = dt;
+  return d;
+}
 
 }  // namespace latmpm::mpm

@@ -1,9 +1,9 @@
 // The closed set of constitutive models and the one place that dispatches over them.
 // Adding a model: one header like linear_elastic.hpp, one alternative here, one case in
-// make_material_model. A model provides update_stress(Deformation, stress),
-// strain_energy_density(F, J, stress) (J/m³ of reference volume) and
-// wave_speed_squared(J) (m²/s², non-increasing in J: the solver evaluates it at the
-// smallest J of each body run).
+// make_material_model. A model provides, as templates over T = Real or Pack,
+// update_stress(Deformation<T>, Stress<T>&) and strain_energy_density(Deformation<T>,
+// Stress<T>) (J/m³ of reference volume), and wave_speed_squared(J) (m²/s², non-increasing
+// in J: the solver evaluates it at the smallest J of each body run).
 #pragma once
 #include <variant>
 
@@ -20,6 +20,27 @@ inline MaterialModel make_material_model(const MaterialParameters& m, Real mass_
     case MaterialKind::neo_hookean: return NeoHookean::from(m, mass_scaling);
   }
   return LinearElastic::from(m, mass_scaling);
+}
+
+// One particle with Eigen types (set-up, tests): the stress after a step, and ψ per
+// reference volume for the deformation F and stress s.
+template <class Model>
+SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s) {
+  const Deformation<Real> d = make_deformation(L, F_new, dt);
+  Real out[6];
+  for (int c = 0; c < 6; ++c) out[c] = s[c];
+  model.update_stress(d, out);
+  SymTensor result;
+  for (int c = 0; c < 6; ++c) result[c] = out[c];
+  return result;
+}
+
+template <class Model>
+Real strain_energy_density(const Model& model, const Mat3& F, const SymTensor& s) {
+  const Deformation<Real> d = make_deformation(Mat3::Zero(), F, 0);
+  Real stress[6];
+  for (int c = 0; c < 6; ++c) stress[c] = s[c];
+  return model.strain_energy_density(d, stress);
 }
 
 }  // namespace latmpm::mpm

@@ -18,11 +18,12 @@ struct NeoHookean {
     return {m.lame_lambda(), m.shear_modulus(), m.density * mass_scaling};
   }
 
-  [[gnu::always_inline]] void update_stress(const Deformation& d, SymTensor& s) const {
-    const Mat3& F = d.f_new;
-    const Mat3 b = F * F.transpose();
-    const Real inv_j = 1 / d.jacobian;
-    const Real pressure_term = lambda * std::log(d.jacobian);
+  template <class T>
+  void update_stress(const Deformation<T>& d, Stress<T>& s) const {
+    const auto& F = d.f_new;
+    auto b = [&](int i, int j) { return F[i][0] * F[j][0] + F[i][1] * F[j][1] + F[i][2] * F[j][2]; };
+    const T inv_j = 1 / d.jacobian;
+    const T pressure_term = lambda * num::log(d.jacobian);
     s[0] = inv_j * (mu * (b(0, 0) - 1) + pressure_term);
     s[1] = inv_j * (mu * (b(1, 1) - 1) + pressure_term);
     s[2] = inv_j * (mu * (b(2, 2) - 1) + pressure_term);
@@ -38,9 +39,15 @@ struct NeoHookean {
     return (lambda + 2 * mu + stiffening) / density;
   }
 
-  Real strain_energy_density(const Mat3& F, Real jacobian, const SymTensor& /*s*/) const {
-    const Real log_j = std::log(jacobian);
-    return Real(0.5) * mu * (F.squaredNorm() - 3) - mu * log_j + Real(0.5) * lambda * log_j * log_j;
+  template <class T>
+  T strain_energy_density(const Deformation<T>& d, const Stress<T>& /*s*/) const {
+    const auto& F = d.f_new;
+    T trace_b = F[0][0] * F[0][0];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (i || j) trace_b += F[i][j] * F[i][j];
+    const T log_j = num::log(d.jacobian);
+    return Real(0.5) * mu * (trace_b - 3) - mu * log_j + Real(0.5) * lambda * log_j * log_j;
   }
 };
 

@@ -5,11 +5,13 @@
 #include <cstring>
 
 #include "mpm/real.hpp"
+#include "mpm/simd.hpp"
 #include "mpm/sparse_grid.hpp"
 
 namespace latmpm::mpm {
 
-typedef Real NodeLanes __attribute__((vector_size(lane::count * sizeof(Real))));
+using NodeLanes = Pack;  // lane::count == pack_width
+static_assert(lane::count == pack_width);
 
 inline NodeLanes load_lanes(const Real* node) {
   NodeLanes v;

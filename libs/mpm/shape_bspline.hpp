@@ -16,8 +16,9 @@ struct Bspline2Shape {
 
   template <class T, class I>
   static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
-    base = num::floor_to_int(xi - Real(0.5));
-    const T f = xi - num::to_real(base);
+    const T first = num::floor(xi - Real(0.5));
+    base = num::to_int(first);
+    const T f = xi - first;
     const T a = Real(1.5) - f, b = f - 1, c = f - Real(0.5);
     w[0] = Real(0.5) * a * a;
     w[1] = Real(0.75) - b * b;
@@ -38,8 +39,9 @@ struct Bspline3Shape {
 
   template <class T, class I>
   static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
-    base = num::floor_to_int(xi) - 1;
-    const T t = xi - num::to_real(base) - 1, t2 = t * t, t3 = t2 * t, s = 1 - t;
+    const T cell = num::floor(xi);
+    base = num::to_int(cell) - 1;
+    const T t = xi - cell, t2 = t * t, t3 = t2 * t, s = 1 - t;
     constexpr Real sixth = Real(1) / 6;
     w[0] = sixth * s * s * s;
     w[1] = sixth * (3 * t3 - 6 * t2 + 4);

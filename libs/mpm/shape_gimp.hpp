@@ -48,8 +48,9 @@ struct UgimpShape {
   template <class T, class I>
   static void weights(T xi, T half, I& base, T* w, T* dw) {
     const T lo = xi - half;
-    base = num::floor_to_int(lo);
-    const T a = lo - num::to_real(base), b = a + 2 * half;
+    const T first = num::floor(lo);
+    base = num::to_int(first);
+    const T a = lo - first, b = a + 2 * half;
     const T inv_width = Real(0.5) / half;
     const T left = 1 - a, short_of_middle = num::max(1 - b, num::constant<T>(0));
     const T e = num::max(b - 1, num::constant<T>(0));
@@ -73,10 +74,11 @@ struct CpgimpShape {
   // The general form above, node by node (the domain may span up to two cells).
   template <class T, class I>
   static void weights(T xi, T half, I& base, T* w, T* dw) {
-    base = num::floor_to_int(xi - half);
+    const T first = num::floor(xi - half);
+    base = num::to_int(first);
     const T scale = Real(0.5) / half;
     for (int k = 0; k < nodes_per_axis; ++k) {
-      const T node = num::to_real(base) + Real(k);
+      const T node = first + Real(k);
       const T up = xi + half - node, um = xi - half - node;
       w[k] = scale * gimp_detail::tent_integral(um, up);
       dw[k] = scale * (gimp_detail::tent(up) - gimp_detail::tent(um));

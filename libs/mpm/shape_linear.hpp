@@ -15,8 +15,9 @@ struct LinearShape {
 
   template <class T, class I>
   static void weights(T xi, T /*half*/, I& base, T* w, T* dw) {
-    base = num::floor_to_int(xi);
-    const T f = xi - num::to_real(base);  // in [0, 1)
+    const T cell = num::floor(xi);
+    base = num::to_int(cell);
+    const T f = xi - cell;  // in [0, 1)
     w[0] = 1 - f;
     w[1] = f;
     dw[0] = num::constant<T>(-1);

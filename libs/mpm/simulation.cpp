@@ -298,7 +298,7 @@ struct Simulation::Impl {
       max_speed = std::max(max_speed, ps.velocity[p].norm());
       initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() +
           ps.volume0[p] * std::visit([&](const auto& m) {
-            return m.strain_energy_density(ps.deformation[p], ps.deformation[p].determinant(), ps.stress[p]);
+            return strain_energy_density(m, ps.deformation[p], ps.stress[p]);
           }, body_info[b].model);
     }
     initial_centre.assign(nb, Vec3::Zero());

@@ -6,43 +6,12 @@
 // N³ stored weights.
 //
 // Shape policies write their 1D formulas once, as templates over the number type T: plain
-// Real (tests, reference) or Axes (x, y, z and one spare lane), with the helpers below.
+// Real (tests, reference) or Axes (x, y, z and one spare lane), with the helpers of simd.hpp.
 #pragma once
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-
 #include "mpm/real.hpp"
+#include "mpm/simd.hpp"
 
 namespace latmpm::mpm {
-
-typedef Real Axes __attribute__((vector_size(4 * sizeof(Real))));
-typedef int32_t AxesInt __attribute__((vector_size(4 * sizeof(int32_t))));
-
-namespace num {
-inline Real max(Real a, Real b) { return std::max(a, b); }
-inline Axes max(Axes a, Axes b) { return a > b ? a : b; }
-inline Real min(Real a, Real b) { return std::min(a, b); }
-inline Axes min(Axes a, Axes b) { return a < b ? a : b; }
-inline Real abs(Real a) { return std::abs(a); }
-inline Axes abs(Axes a) { return a < 0 ? -a : a; }
-inline Real clamp(Real a, Real lo, Real hi) { return std::clamp(a, lo, hi); }
-inline Axes clamp(Axes a, Real lo, Real hi) { return min(max(a, Axes{} + lo), Axes{} + hi); }
-// Integer part towards −∞.
-inline int floor_to_int(Real x) { return static_cast<int>(std::floor(x)); }
-inline AxesInt floor_to_int(Axes x) {
-  const AxesInt truncated = __builtin_convertvector(x, AxesInt);
-  // Truncation rounds negative non-integers up: step those down by one (true is −1).
-  return truncated + __builtin_convertvector(__builtin_convertvector(truncated, Axes) > x, AxesInt);
-}
-inline Real to_real(int i) { return Real(i); }
-inline Axes to_real(AxesInt i) { return __builtin_convertvector(i, Axes); }
-template <class T>
-inline T constant(Real c) {
-  if constexpr (std::is_same_v<T, Real>) return c;
-  else return T{} + c;
-}
-}  // namespace num
 
 inline int floor_to_int(Real x) { return num::floor_to_int(x); }
 

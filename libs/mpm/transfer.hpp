@@ -182,10 +182,12 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     if (!ParticleBuckets::within_drift(b, cell)) tally.drifted = true;
   };
 
-  for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
-    const BodyRun& run = runs[r - b.run_begin];
+  // Sums of the bucket, one lane per particle slot of a group, added up at the end.
+  Pack kinetic{}, strain{}, gravity_power{}, record_stress_volume{}, record_volume_sum{};
+  for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
+    const BodyRun& run = runs[run_index - b.run_begin];
     const BodyInfo& body = bodies[run.body];
-    RunTally& rt = run_tally[r - b.run_begin];
+    RunTally& rt = run_tally[run_index - b.run_begin];
     rt = RunTally{};
     if (body.role != BodyRole::deformable) {
       // Rigid points move with their prescribed velocity; F and σ stay as they are.
@@ -203,71 +205,119 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
           // Wave speeds grow as J falls (never the other way), so the run's smallest J
           // gives its largest wave speed: one evaluation per run instead of per particle.
           Real min_j = std::numeric_limits<Real>::infinity();
-          for (uint32_t p = run.begin; p < run.end; ++p) {
-            const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
-            const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-            // Sums over the stencil: aw = Σ S_i n_i, ax = Σ ∂xS_i n_i, ... for node lanes n_i.
-            // Per row (i, j): rw = Σ_k Sz_k n_k and rd = Σ_k Sz_k n_k, then weighted by Sx, Sy.
-            NodeLanes aw{}, ax{}, ay{}, az{};
-            for (int i = 0; i < N; ++i)
-              for (int j = 0; j < N; ++j) {
-                const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-                NodeLanes rw{}, rd{};
-                for (int k = 0; k < N; ++k) {
-                  const NodeLanes n = load_lanes(row + k * L);
-                  rw += st.w[k][2] * n;
-                  if constexpr (gradient) rd += st.dw[k][2] * n;
+          for (uint32_t g0 = run.begin; g0 < run.end; g0 += pack_width) {
+            const int n = int(std::min<uint32_t>(pack_width, run.end - g0));
+            // 1. Interpolate from the grid, particle by particle: new velocity, its change
+            //    and the velocity gradient, into lane q of the group's packs.
+            Pack v_grid[3] = {}, dv[3] = {}, grad_v[3][3] = {};
+            for (int q = 0; q < n; ++q) {
+              const uint32_t p = g0 + uint32_t(q);
+              const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
+              const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+              // aw = Σ S_i n_i, ax = Σ ∂xS_i n_i, ... over the node lanes n_i; per row (i, j)
+              // first rw = Σ_k Sz_k n_k and rd = Σ_k Sz'_k n_k, then weighted by Sx, Sy.
+              NodeLanes aw{}, ax{}, ay{}, az{};
+              for (int i = 0; i < N; ++i)
+                for (int j = 0; j < N; ++j) {
+                  const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
+                  NodeLanes rw{}, rd{};
+                  for (int k = 0; k < N; ++k) {
+                    const NodeLanes node = load_lanes(row + k * L);
+                    rw += st.w[k][2] * node;
+                    if constexpr (gradient) rd += st.dw[k][2] * node;
+                  }
+                  const Real wij = st.w[i][0] * st.w[j][1];
+                  aw += wij * rw;
+                  if constexpr (gradient) {
+                    ax += (st.dw[i][0] * st.w[j][1]) * rw;
+                    ay += (st.w[i][0] * st.dw[j][1]) * rw;
+                    az += wij * rd;
+                  }
                 }
-                const Real wij = st.w[i][0] * st.w[j][1];
-                aw += wij * rw;
-                if constexpr (gradient) {
-                  ax += (st.dw[i][0] * st.w[j][1]) * rw;
-                  ay += (st.w[i][0] * st.dw[j][1]) * rw;
-                  az += wij * rd;
+              for (int a = 0; a < 3; ++a) {
+                v_grid[a][q] = aw[lane::momentum + a];
+                dv[a][q] = aw[lane::force + a];
+                if constexpr (gradient) {  // L_ab = Σ v_a ∂_b S
+                  grad_v[a][0][q] = ax[Mode::gradient_lane + a];
+                  grad_v[a][1][q] = ay[Mode::gradient_lane + a];
+                  grad_v[a][2][q] = az[Mode::gradient_lane + a];
                 }
               }
-            const Real m = ps.mass[p];
-            const Vec3 v_grid(aw[lane::momentum], aw[lane::momentum + 1], aw[lane::momentum + 2]);
+            }
+            // 2. Update the group's particles together, one per lane. Idle lanes (q ≥ n)
+            //    hold zero mass and volume, F = I and σ = 0: they add nothing to any sum.
+            Pack m{};
+            for (int q = 0; q < n; ++q) m[q] = ps.mass[g0 + q];
             if constexpr (Mode::velocity) {
-              const Vec3 dv(aw[lane::force], aw[lane::force + 1], aw[lane::force + 2]);
-              Vec3& v = ps.velocity[p];
-              v = flip * (v + dv) + (1 - flip) * v_grid;
-              const Real speed_sq = v.squaredNorm();
-              tally.kinetic += Real(0.5) * m * speed_sq;
-              tally.max_speed_sq = std::max(tally.max_speed_sq, speed_sq);
-              if (!std::isfinite(speed_sq)) note_fault(tally, ParticleFault::not_finite, p);
+              Pack v[3] = {};
+              for (int q = 0; q < n; ++q)
+                for (int a = 0; a < 3; ++a) v[a][q] = ps.velocity[g0 + q][a];
+              for (int a = 0; a < 3; ++a) v[a] = flip * (v[a] + dv[a]) + (1 - flip) * v_grid[a];
+              const Pack speed_sq = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+              kinetic += Real(0.5) * m * speed_sq;
+              for (int q = 0; q < n; ++q) {
+                ps.velocity[g0 + q] = Vec3(v[0][q], v[1][q], v[2][q]);
+                tally.max_speed_sq = std::max(tally.max_speed_sq, speed_sq[q]);
+                if (!std::isfinite(speed_sq[q])) note_fault(tally, ParticleFault::not_finite, g0 + q);
+              }
             }
             if constexpr (Mode::position) {
-              ps.position[p] += dt * v_grid;
-              tally.gravity_power += m * gravity.dot(v_grid);
-              rt.mass_position += m * ps.position[p];
-              rt.mass += m;
-              track_cell(p);
+              for (int a = 0; a < 3; ++a) gravity_power += (gravity[a] * m) * v_grid[a];
+              for (int q = 0; q < n; ++q) {
+                const uint32_t p = g0 + uint32_t(q);
+                for (int a = 0; a < 3; ++a) ps.position[p][a] += dt * v_grid[a][q];
+                rt.mass_position += m[q] * ps.position[p];
+                rt.mass += m[q];
+                track_cell(p);
+              }
             }
             if constexpr (gradient) {
-              constexpr int g = Mode::gradient_lane;
-              Mat3 grad_v;  // L_ab = Σ v_a ∂_b S
-              grad_v << ax[g], ay[g], az[g], ax[g + 1], ay[g + 1], az[g + 1], ax[g + 2], ay[g + 2], az[g + 2];
-              // F ← F + dt L F, written out: Eigen's aliasing-safe product costs a temporary.
-              Mat3& F = ps.deformation[p];
-              const Mat3 F_old = F;
-              for (int row = 0; row < 3; ++row)
-                for (int col = 0; col < 3; ++col)
-                  F(row, col) += dt * (grad_v(row, 0) * F_old(0, col) + grad_v(row, 1) * F_old(1, col) +
-                                       grad_v(row, 2) * F_old(2, col));
-              const Real J = F.determinant();
-              if (!(J > par.min_jacobian))
-                note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
-              SymTensor& s = ps.stress[p];
-              material.update_stress(Deformation{grad_v, F, J, dt}, s);
-              const Real energy = ps.volume0[p] * material.strain_energy_density(F, J, s);
-              if (!std::isfinite(energy)) note_fault(tally, ParticleFault::not_finite, p);
-              tally.strain += energy;
-              min_j = std::min(min_j, J);
-              if (ps.flags[p] & Particles::record_flag) {
-                const Real volume = J * ps.volume0[p];
-                tally.record_stress_volume += s[2] * volume;
-                tally.record_volume += volume;
+              Deformation<Pack> d;
+              d.dt = dt;
+              Pack f_old[3][3];
+              for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) {
+                  f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
+                  d.velocity_gradient[r][c] = grad_v[r][c];
+                }
+              for (int q = 0; q < n; ++q) {
+                const Mat3& F = ps.deformation[g0 + q];
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
+              }
+              // F ← (I + dt L) F
+              auto& F = d.f_new;
+              for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                  F[r][c] = f_old[r][c] + dt * (grad_v[r][0] * f_old[0][c] + grad_v[r][1] * f_old[1][c] +
+                                                grad_v[r][2] * f_old[2][c]);
+              d.jacobian = F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) -
+                           F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
+                           F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
+              Pack s[6] = {}, volume0{}, record{};
+              for (int q = 0; q < n; ++q) {
+                const uint32_t p = g0 + uint32_t(q);
+                for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
+                volume0[q] = ps.volume0[p];
+                record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
+              }
+              material.update_stress(d, s);
+              const Pack energy = volume0 * material.strain_energy_density(d, s);
+              strain += energy;
+              const Pack record_volume = record * d.jacobian * volume0;
+              record_stress_volume += s[2] * record_volume;
+              record_volume_sum += record_volume;
+              for (int q = 0; q < n; ++q) {
+                const uint32_t p = g0 + uint32_t(q);
+                const Real J = d.jacobian[q];
+                if (!(J > par.min_jacobian))
+                  note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
+                if (!std::isfinite(energy[q])) note_fault(tally, ParticleFault::not_finite, p);
+                min_j = std::min(min_j, J);
+                Mat3& Fp = ps.deformation[p];
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) Fp(r, c) = F[r][c][q];
+                for (int c = 0; c < 6; ++c) ps.stress[p][c] = s[c][q];
               }
             }
           }
@@ -276,6 +326,13 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               tally.max_wave_speed_sq = std::max(tally.max_wave_speed_sq, material.wave_speed_squared(min_j));
         },
         body.model);
+  }
+  for (int q = 0; q < pack_width; ++q) {
+    tally.kinetic += kinetic[q];
+    tally.strain += strain[q];
+    tally.gravity_power += gravity_power[q];
+    tally.record_stress_volume += record_stress_volume[q];
+    tally.record_volume += record_volume_sum[q];
   }
 }
 

@@ -1,0 +1,78 @@
+// Small SIMD value types (GCC/Clang vector extensions) and the few functions the solver's
+// formulas need on them, so one templated formula serves plain Real and vectors:
+//   Axes — x, y, z (and a spare lane) of one particle: shape-function stencils;
+//   Pack — one value of eight particles: constitutive updates of a group of particles,
+//          and the eight lanes of one grid node.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+#include "mpm/real.hpp"
+
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
+namespace latmpm::mpm {
+
+typedef Real Axes __attribute__((vector_size(4 * sizeof(Real))));
+typedef int32_t AxesInt __attribute__((vector_size(4 * sizeof(int32_t))));
+typedef Real Pack __attribute__((vector_size(8 * sizeof(Real))));
+inline constexpr int pack_width = 8;
+
+namespace num {
+// With AVX and Real = double, Axes is an __m256d: use the single instructions for these.
+#if defined(__AVX__)
+inline constexpr bool axes_are_m256d = std::is_same_v<Real, double>;
+#else
+inline constexpr bool axes_are_m256d = false;
+#endif
+
+inline Real max(Real a, Real b) { return std::max(a, b); }
+inline Axes max(Axes a, Axes b) {
+#if defined(__AVX__)
+  if constexpr (axes_are_m256d) return (Axes)_mm256_max_pd((__m256d)a, (__m256d)b);
+#endif
+  return a > b ? a : b;
+}
+inline Real min(Real a, Real b) { return std::min(a, b); }
+inline Axes min(Axes a, Axes b) {
+#if defined(__AVX__)
+  if constexpr (axes_are_m256d) return (Axes)_mm256_min_pd((__m256d)a, (__m256d)b);
+#endif
+  return a < b ? a : b;
+}
+inline Real abs(Real a) { return std::abs(a); }
+inline Axes abs(Axes a) { return max(a, -a); }
+inline Real clamp(Real a, Real lo, Real hi) { return std::clamp(a, lo, hi); }
+inline Axes clamp(Axes a, Real lo, Real hi) { return min(max(a, Axes{} + lo), Axes{} + hi); }
+inline Real log(Real a) { return std::log(a); }
+inline Pack log(Pack a) {
+  for (int q = 0; q < pack_width; ++q) a[q] = std::log(a[q]);
+  return a;
+}
+// Largest integer ≤ x (as a floating-point value), and its conversion to int.
+inline Real floor(Real x) { return std::floor(x); }
+inline Axes floor(Axes x) {
+#if defined(__AVX__)
+  if constexpr (axes_are_m256d) return (Axes)_mm256_floor_pd((__m256d)x);
+#endif
+  for (int a = 0; a < 4; ++a) x[a] = std::floor(x[a]);
+  return x;
+}
+inline int to_int(Real integral) { return static_cast<int>(integral); }
+inline AxesInt to_int(Axes integral) { return __builtin_convertvector(integral, AxesInt); }
+inline int floor_to_int(Real x) { return to_int(floor(x)); }
+inline AxesInt floor_to_int(Axes x) { return to_int(floor(x)); }
+inline Real to_real(int i) { return Real(i); }
+inline Axes to_real(AxesInt i) { return __builtin_convertvector(i, Axes); }
+template <class T>
+inline T constant(Real c) {
+  if constexpr (std::is_same_v<T, Real>) return c;
+  else return T{} + c;
+}
+}  // namespace num
+
+}  // namespace latmpm::mpm
