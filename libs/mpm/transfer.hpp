@@ -168,13 +168,13 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   tally.cell_max = {-max_cell_coord, -max_cell_coord, -max_cell_coord};
   // Records the particle's new cell: the bucket's node box for the next step, the drift
   // that calls for a re-sort, and a particle that left the grid's coordinate range.
-  auto track_cell = [&](uint32_t p) {
+  auto track_cell = [&](uint32_t p, const Vec3& x) {
     for (int a = 0; a < 3; ++a)
-      if (!(std::abs(ps.position[p][a] * inv_h) < max_cell_coord)) {
-        note_fault(tally, std::isfinite(ps.position[p][a]) ? ParticleFault::left_grid : ParticleFault::not_finite, p);
+      if (!(std::abs(x[a] * inv_h) < max_cell_coord)) {
+        note_fault(tally, std::isfinite(x[a]) ? ParticleFault::left_grid : ParticleFault::not_finite, p);
         return;
       }
-    const auto cell = cell_of(ps.position[p], inv_h);
+    const auto cell = cell_of(x, inv_h);
     for (int a = 0; a < 3; ++a) {
       tally.cell_min[a] = std::min(tally.cell_min[a], cell[a]);
       tally.cell_max[a] = std::max(tally.cell_max[a], cell[a]);
@@ -195,7 +195,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
         if constexpr (Mode::velocity) ps.velocity[p] = body.velocity;
         if constexpr (Mode::position) {
           ps.position[p] += dt * body.velocity;
-          track_cell(p);
+          track_cell(p, ps.position[p]);
         }
       }
       continue;
@@ -207,6 +207,27 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
           Real min_j = std::numeric_limits<Real>::infinity();
           for (uint32_t g0 = run.begin; g0 < run.end; g0 += pack_width) {
             const int n = int(std::min<uint32_t>(pack_width, run.end - g0));
+            // 0. The group's particle state, one particle per lane, read before the grid
+            //    interpolation so the lane-by-lane stores have long landed when the packs
+            //    are read back as vectors. Idle lanes (q ≥ n) hold zero mass and volume,
+            //    F = I and σ = 0: they add nothing to any sum.
+            Pack m{}, v[3] = {}, f_old[3][3], s[6] = {}, volume0{}, record{};
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < 3; ++c) f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
+            for (int q = 0; q < n; ++q) {
+              const uint32_t p = g0 + uint32_t(q);
+              m[q] = ps.mass[p];
+              if constexpr (Mode::velocity)
+                for (int a = 0; a < 3; ++a) v[a][q] = ps.velocity[p][a];
+              if constexpr (gradient) {
+                const Mat3& F = ps.deformation[p];
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
+                for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
+                volume0[q] = ps.volume0[p];
+                record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
+              }
+            }
             // 1. Interpolate from the grid, particle by particle: new velocity, its change
             //    and the velocity gradient, into lane q of the group's packs.
             Pack v_grid[3] = {}, dv[3] = {}, grad_v[3][3] = {};
@@ -244,14 +265,8 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 }
               }
             }
-            // 2. Update the group's particles together, one per lane. Idle lanes (q ≥ n)
-            //    hold zero mass and volume, F = I and σ = 0: they add nothing to any sum.
-            Pack m{};
-            for (int q = 0; q < n; ++q) m[q] = ps.mass[g0 + q];
+            // 2. Update the group's particles together, one per lane.
             if constexpr (Mode::velocity) {
-              Pack v[3] = {};
-              for (int q = 0; q < n; ++q)
-                for (int a = 0; a < 3; ++a) v[a][q] = ps.velocity[g0 + q][a];
               for (int a = 0; a < 3; ++a) v[a] = flip * (v[a] + dv[a]) + (1 - flip) * v_grid[a];
               const Pack speed_sq = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
               kinetic += Real(0.5) * m * speed_sq;
@@ -265,26 +280,20 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               for (int a = 0; a < 3; ++a) gravity_power += (gravity[a] * m) * v_grid[a];
               for (int q = 0; q < n; ++q) {
                 const uint32_t p = g0 + uint32_t(q);
-                for (int a = 0; a < 3; ++a) ps.position[p][a] += dt * v_grid[a][q];
-                rt.mass_position += m[q] * ps.position[p];
+                // In registers, then stored once: re-reading the freshly stored components
+                // as one vector would stall on store forwarding.
+                const Vec3 x = ps.position[p] + dt * Vec3(v_grid[0][q], v_grid[1][q], v_grid[2][q]);
+                ps.position[p] = x;
+                rt.mass_position += m[q] * x;
                 rt.mass += m[q];
-                track_cell(p);
+                track_cell(p, x);
               }
             }
             if constexpr (gradient) {
               Deformation<Pack> d;
               d.dt = dt;
-              Pack f_old[3][3];
               for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) {
-                  f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
-                  d.velocity_gradient[r][c] = grad_v[r][c];
-                }
-              for (int q = 0; q < n; ++q) {
-                const Mat3& F = ps.deformation[g0 + q];
-                for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
-              }
+                for (int c = 0; c < 3; ++c) d.velocity_gradient[r][c] = grad_v[r][c];
               // F ← (I + dt L) F
               auto& F = d.f_new;
               for (int r = 0; r < 3; ++r)
@@ -294,13 +303,6 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               d.jacobian = F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) -
                            F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
                            F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
-              Pack s[6] = {}, volume0{}, record{};
-              for (int q = 0; q < n; ++q) {
-                const uint32_t p = g0 + uint32_t(q);
-                for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
-                volume0[q] = ps.volume0[p];
-                record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
-              }
               material.update_stress(d, s);
               const Pack energy = volume0 * material.strain_energy_density(d, s);
               strain += energy;
