@@ -3,6 +3,7 @@
 // instead of hash look-ups. P2G scatters into it and then adds it to the sparse grid;
 // G2P first copies the grid into it and then gathers from it.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -37,10 +38,11 @@ inline int first_table_block(int bucket_coord) {
   return floor_div(ParticleBuckets::cells * bucket_coord + ParticleBuckets::buffer_lo, SparseGrid::block_width);
 }
 
-// Calls fn(grid_node, buffer_node) for every node of the bucket's box.
+// Calls fn(grid_nodes, buffer_nodes, count) for every run of nodes of the bucket's box that
+// is contiguous in both the grid block and the buffer (along k, at most a block wide).
 template <class GridPtr, class Fn>
-void for_each_box_node(const Bucket& b, const BlockTable& table, GridPtr grid_blocks,
-                       BucketBuffer& buffer, Fn&& fn) {
+void for_each_box_run(const Bucket& b, const BlockTable& table, GridPtr grid_blocks,
+                      BucketBuffer& buffer, Fn&& fn) {
   constexpr int bw = SparseGrid::block_width;
   int first[3];
   for (int a = 0; a < 3; ++a) first[a] = first_table_block(b.coord[a]);
@@ -48,10 +50,12 @@ void for_each_box_node(const Bucket& b, const BlockTable& table, GridPtr grid_bl
     const int bi = floor_div(i, bw), li = i - bw * bi;
     for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
       const int bj = floor_div(j, bw), lj = j - bw * bj;
-      for (int k = b.box_lo[2]; k <= b.box_hi[2]; ++k) {
+      for (int k = b.box_lo[2]; k <= b.box_hi[2];) {
         const int bk = floor_div(k, bw), lk = k - bw * bk;
+        const int count = std::min(bw - lk, b.box_hi[2] - k + 1);
         const int block = table[((bi - first[0]) * 4 + (bj - first[1])) * 4 + (bk - first[2])];
-        fn(grid_blocks(block) + SparseGrid::node_offset(li, lj, lk), buffer.data.data() + buffer.offset(i, j, k));
+        fn(grid_blocks(block) + SparseGrid::node_offset(li, lj, lk), buffer.data.data() + buffer.offset(i, j, k), count);
+        k += count;
       }
     }
   }
@@ -70,20 +74,20 @@ inline void clear_box(const Bucket& b, BucketBuffer& buffer) {
 // (so the same rigid body wins wherever it touches, independent of order).
 inline void add_box_to_grid(const Bucket& b, const BlockTable& table, SparseGrid& grid,
                             BucketBuffer& buffer) {
-  for_each_box_node(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
-                    [](Real* g, const Real* l) {
-                      for (int c = 0; c < lane::constraint; ++c) g[c] += l[c];
-                      g[lane::constraint] = std::max(g[lane::constraint], l[lane::constraint]);
-                    });
+  for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+                   [](Real* g, const Real* l, int count) {
+                     for (int n = 0; n < count; ++n, g += lane::count, l += lane::count) {
+                       for (int c = 0; c < lane::constraint; ++c) g[c] += l[c];
+                       g[lane::constraint] = std::max(g[lane::constraint], l[lane::constraint]);
+                     }
+                   });
 }
 
 // Copies the grid's nodes of the bucket's box into the buffer.
 inline void copy_box_from_grid(const Bucket& b, const BlockTable& table, const SparseGrid& grid,
                                BucketBuffer& buffer) {
-  for_each_box_node(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
-                    [](const Real* g, Real* l) {
-                      for (int c = 0; c < lane::count; ++c) l[c] = g[c];
-                    });
+  for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+                   [](const Real* g, Real* l, int count) { std::copy(g, g + count * lane::count, l); });
 }
 
 }  // namespace latmpm::mpm
