@@ -16,7 +16,8 @@ struct Particles {
   std::vector<Real> volume0;         // m³, initial volume V0 (current volume = J · V0)
   std::vector<Mat3> deformation;     // F, dimensionless
   std::vector<SymTensor> stress;     // Cauchy stress, Pa, Voigt xx yy zz yz xz xy
-  std::vector<Vec3> half_size0;      // m, initial GIMP particle-domain half-lengths
+  std::vector<Vec3> half_size0;      // m, initial GIMP particle-domain half-lengths (a point
+                                     // set's zero half-size becomes cell_size / (2 ppc))
   std::vector<int32_t> body;         // index into Simulation::bodies()
   std::vector<uint32_t> id;          // index in the PointSet the particles came from
   std::vector<uint8_t> flags;        // bit flags below
