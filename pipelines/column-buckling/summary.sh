@@ -6,7 +6,7 @@
 # the base plate holds its nodes at rest and the driven plate moves its nodes at v0, and the
 # column's end points share those nodes, so neither end can rotate or move sideways (the
 # paper's FEM check constrains the top the same way).
-# usage: summary.sh OUT_DIR E_Pa L_m K CASE...   (CASE = t<diameter mm>-a<label>, e.g. t2.4-a0.02L)
+# usage: summary.sh OUT_DIR E_Pa L_m K CASE...   (CASE = t<diameter mm>-a<label>[-suffix...], e.g. t2.4-a0.02L-v50)
 set -euo pipefail
 out_dir=$1 E=$2 L=$3 K=$4
 shift 4
@@ -15,7 +15,7 @@ echo "case,t[mm],a,peak_load[N],plateau_load[N],euler_load[N],peak/euler,plateau
 echo "| case | t (mm) | a | peak load (N) | plateau load (N) | Euler load, K = $K (N) | peak / Euler | plateau / Euler | steps | wall time (s) |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for case in "$@"; do
-  t=${case#t}; t=${t%%-a*}; a=${case##*-a}
+  t=${case#t}; t=${t%%-a*}; a=${case##*-a}; a=${a%%-*}
   curve="$out_dir/load-displacement-$case.csv"
   wall=$(sed -n 's/^wall_s=//p' "$out_dir/run-$case/wall_time.txt")
   steps=$(sed -n 's/.*status: finished steps=\([0-9]*\).*/\1/p' "$out_dir/run-$case/log.txt")
