@@ -1,6 +1,7 @@
 #include "geometry/graph_checks.hpp"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <set>
 #include <utility>
@@ -20,11 +21,11 @@ struct DisjointSets {
   void join(size_t a, size_t b) { parent[find(a)] = find(b); }
 };
 
-double distance_to_box(const Eigen::Vector3d& p, const Plate& box) {
-  return (p.cwiseMax(box.min).cwiseMin(box.max) - p).norm();
-}
-
 }  // namespace
+
+double distance_to_box(const Eigen::Vector3d& x, const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  return (x.cwiseMax(min).cwiseMin(max) - x).norm();
+}
 
 double strut_length(const StrutGraph& graph, const Strut& strut) {
   return (graph.nodes[strut.b] - graph.nodes[strut.a]).norm();
@@ -44,23 +45,37 @@ size_t count_duplicate_struts(const StrutGraph& graph) {
   return duplicates;
 }
 
-size_t count_bodies(const StrutGraph& graph, double tolerance) {
-  const size_t n = graph.nodes.size(), plates = graph.plates.size();
-  DisjointSets sets(n + plates);
-  std::vector<bool> used(n + plates, false);
-  for (size_t p = 0; p < plates; ++p) used[n + p] = true;
+Pieces connected_pieces(const StrutGraph& graph, double tolerance) {
+  const size_t nodes = graph.nodes.size();
+  DisjointSets sets(nodes + graph.plates.size());
   for (const Strut& s : graph.struts) {
     sets.join(s.a, s.b);
-    used[s.a] = used[s.b] = true;
-    for (size_t p = 0; p < plates; ++p)
+    for (size_t p = 0; p < graph.plates.size(); ++p)
       for (int32_t end : {s.a, s.b})
-        if (distance_to_box(graph.nodes[end], graph.plates[p]) <= s.radius + tolerance)
-          sets.join(end, n + p);
+        if (distance_to_box(graph.nodes[end], graph.plates[p].min, graph.plates[p].max) <=
+            s.radius + tolerance)
+          sets.join(end, nodes + p);
   }
-  std::set<size_t> roots;
-  for (size_t i = 0; i < n + plates; ++i)
-    if (used[i]) roots.insert(sets.find(i));
-  return roots.size();
+  Pieces pieces;
+  std::map<size_t, int> piece_of_root;
+  auto piece = [&](size_t element) {
+    auto it = piece_of_root.emplace(sets.find(element), pieces.count);
+    if (it.second) {
+      ++pieces.count;
+      pieces.struts_in.push_back(0);
+    }
+    return it.first->second;
+  };
+  for (const Strut& s : graph.struts) {
+    pieces.of_strut.push_back(piece(s.a));
+    ++pieces.struts_in[pieces.of_strut.back()];
+  }
+  for (size_t p = 0; p < graph.plates.size(); ++p) pieces.of_plate.push_back(piece(nodes + p));
+  return pieces;
+}
+
+size_t count_bodies(const StrutGraph& graph, double tolerance) {
+  return static_cast<size_t>(connected_pieces(graph, tolerance).count);
 }
 
 }  // namespace latmpm

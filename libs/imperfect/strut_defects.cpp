@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "imperfect/strut_connectivity.hpp"
+#include "geometry/graph_checks.hpp"
 #include "imperfect/strut_contacts.hpp"
 
 namespace latmpm {

@@ -5,7 +5,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/lattice.hpp"
-#include "imperfect/strut_connectivity.hpp"
+#include "geometry/graph_checks.hpp"
 #include "imperfect/strut_contacts.hpp"
 #include "imperfect/strut_defects.hpp"
 
