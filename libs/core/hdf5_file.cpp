@@ -229,52 +229,46 @@ hid_t open_object(hid_t file, const std::string& object) {
 }
 }  // namespace
 
+namespace {
+// Replaces attribute `name` on `object` with one of the given type and shape.
+bool replace_attribute(hid_t file, const std::string& object, const std::string& name,
+                       hid_t type, hid_t space, const void* data) {
+  Handle obj(open_object(file, object), H5Oclose);
+  if (!obj.ok()) return false;
+  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
+  Handle attr(H5Acreate2(obj.id, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return attr.ok() && H5Awrite(attr.id, type, data) >= 0;
+}
+}  // namespace
+
 void Hdf5File::set_attribute(const std::string& object, const std::string& name,
                              const std::string& value) {
-  Handle obj(open_object(id_, object), H5Oclose);
-  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
-  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type.id, H5T_VARIABLE);
   H5Tset_cset(type.id, H5T_CSET_UTF8);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attr(H5Acreate2(obj.id, name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   const char* p = value.c_str();
-  if (!attr.ok() || H5Awrite(attr.id, type.id, &p) < 0) fail(object, "cannot write attribute '" + name + "'");
+  if (!replace_attribute(id_, object, name, type.id, space.id, &p))
+    fail(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name,
                              const std::vector<double>& value) {
-  Handle obj(open_object(id_, object), H5Oclose);
-  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
-  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
   hsize_t n = value.size();
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
-  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT),
-              H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, value.data()) < 0)
+  if (!replace_attribute(id_, object, name, H5T_NATIVE_DOUBLE, space.id, value.data()))
     fail(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
-  Handle obj(open_object(id_, object), H5Oclose);
-  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
-  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT),
-              H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &value) < 0)
+  if (!replace_attribute(id_, object, name, H5T_NATIVE_DOUBLE, space.id, &value))
     fail(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, int64_t value) {
-  Handle obj(open_object(id_, object), H5Oclose);
-  if (!obj.ok()) fail(object, "no such object for attribute '" + name + "'");
-  if (H5Aexists(obj.id, name.c_str()) > 0) H5Adelete(obj.id, name.c_str());
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  Handle attr(H5Acreate2(obj.id, name.c_str(), H5T_NATIVE_INT64, space.id, H5P_DEFAULT, H5P_DEFAULT),
-              H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.id, H5T_NATIVE_INT64, &value) < 0)
+  if (!replace_attribute(id_, object, name, H5T_NATIVE_INT64, space.id, &value))
     fail(object, "cannot write attribute '" + name + "'");
 }
 
