@@ -89,5 +89,7 @@ $(foreach h,$(CB_STUDY_CELLS),$(if $(call cb_study_main,$h),,$(eval $(call cb_st
     --set grid.cell=$(h)mm --set grid.shape=$s)))))
 $(eval $(call pipeline_post,$(CB_STUDY),$(CB_STUDY_RUNS),--kind column,Buckling column: cell-size study (t = 2.4 mm a = 0.02 L),$(CB_SRC)/cell-study-notes.md))
 
+$(CB_OUT)/summary.md $(CB_STUDY)/summary.md: pipelines/column-buckling.mk
+
 .PRECIOUS: $(CB_OUT)/geometry-t%.h5 $(CB_OUT)/voxel-t%.h5 $(CB_OUT)/points-t%-a0.h5 \
            $(CB_OUT)/points-t%-a0.02L.h5

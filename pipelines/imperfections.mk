@@ -18,6 +18,7 @@ IM_CELLS  := $(if $(QUICK),2x2x2,5x5x5)
 IM_PLATES := $(if $(QUICK),2mm,3mm)
 IM_TRAVEL := $(if $(QUICK),4mm,20mm)
 IM_SERIES := $(if $(QUICK),20,50)
+IM_FIT    := $(if $(QUICK),0.3mm:1mm,0.5mm:3mm)
 
 im_case = $(1)$(if $(filter ddmp,$(2)),-ddmp)
 IM_RUNS :=
@@ -47,6 +48,8 @@ $(IM_OUT)/points-none.h5: $(IM_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
 $(IM_OUT)/points-%.h5: $(IM_OUT)/points-none.h5 | $(BIN)/latmpm-imperfect
 	$(BIN)/latmpm-imperfect $< --type $* --amount $(IM_AMOUNT) --quiet -o $@
 
-$(eval $(call pipeline_post,$(IM_OUT),$(IM_RUNS),--kind compression,Imperfections of T1P40 (paper A Sec. 5.3),$(IM_SRC)/notes.md))
+$(eval $(call pipeline_post,$(IM_OUT),$(IM_RUNS),--kind compression --fit-range $(IM_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IM_SRC)/notes.md))
+
+$(IM_OUT)/summary.md: pipelines/imperfections.mk
 
 .PRECIOUS: $(IM_OUT)/geometry.h5 $(IM_OUT)/points-%.h5

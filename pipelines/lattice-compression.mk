@@ -20,6 +20,8 @@ LC_CELLS    := $(if $(QUICK),2x2x2,5x5x5)
 LC_PLATES   := $(if $(QUICK),2mm,3mm)
 LC_TRAVEL   := $(if $(QUICK),4mm,20mm)
 LC_SERIES   := $(if $(QUICK),20,50)
+# Initial stiffness over this travel (the automatic range would sit in the start-up transient).
+LC_FIT      := $(if $(QUICK),0.3mm:1mm,0.5mm:3mm)
 
 lc_case = $(1)-E$(2)$(if $(filter ddmp,$(3)),-ddmp)
 LC_RUNS :=
@@ -44,6 +46,8 @@ $(LC_OUT)/geometry-%.h5: | $(BIN)/latmpm-lattice
 $(LC_OUT)/points-%.h5: $(LC_OUT)/geometry-%.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(LC_CELL) --ppc 2 --quiet -o $@
 
-$(eval $(call pipeline_post,$(LC_OUT),$(LC_RUNS),--kind compression,Lattice compression (paper A Sec. 5.2),$(LC_SRC)/notes.md))
+$(eval $(call pipeline_post,$(LC_OUT),$(LC_RUNS),--kind compression --fit-range $(LC_FIT),Lattice compression (paper A Sec. 5.2),$(LC_SRC)/notes.md))
+
+$(LC_OUT)/summary.md: pipelines/lattice-compression.mk
 
 .PRECIOUS: $(LC_OUT)/geometry-%.h5 $(LC_OUT)/points-%.h5

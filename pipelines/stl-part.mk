@@ -61,4 +61,5 @@ $(eval $(call pipeline_run,$(SP_OUT)/run-part,$(SP_OUT)/part.h5,$(SP_SRC)/part.t
   --set grid.cell=$(SP_CELL) --set run.end.plate_displacement=$(SP_TRAVEL)))
 $(SP_OUT)/run-part/wall_time.txt: $(SP_OUT)/bottom.h5 $(SP_OUT)/top.h5
 
-$(eval $(call pipeline_post,$(SP_OUT),$(SP_OUT)/run-part,--kind compression,STL part: a BCC block between rigid platens,$(SP_SRC)/notes.md))
+$(eval $(call pipeline_post,$(SP_OUT),$(SP_OUT)/run-part,--kind compression --fit-range $(if $(QUICK),0.3mm:1mm,0.5mm:2mm),STL part: a BCC block between rigid platens,$(SP_SRC)/notes.md))
+$(SP_OUT)/summary.md: pipelines/stl-part.mk

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# The trade-off table and Pareto plot: for every run of OUT_DIR/knobs.txt (written by
+# pipelines/tradeoff.mk, one FAMILY:NAME:CELL:PPC:SHAPE:MASS_SCALING:SPEED per line, the
+# reference run first in each family), its cost (OUT_DIR/FAMILY/run-NAME/wall_time.txt) and
+# its errors against the reference (errors.sh). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
+# pareto.png, pareto.svg (when gnuplot is there) and OUT_DIR/summary.md.
+# usage: report.sh OUT_DIR
+set -euo pipefail
+out=$1
+here=$(dirname "$0")
+euler_column=0.4961   # N: pi^2 E I / (K L)^2, E = 10 MPa, t = 1.6 mm, L = 16 mm, K = 0.5
+csv="$out/errors.csv"
+echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se" > "$csv.tmp"
+while IFS=: read -r family name cell ppc shape ms speed; do
+  [ -n "$family" ] || continue
+  run="$out/$family/run-$name"
+  [ "$name" = ref ] && ref=$run
+  cost=$(awk -F= '{ v[$1] = $2 } END { printf "%s,%s,%s,%s", v["points"], v["steps"], v["cpu_s"], v["wall_s"] }' "$run/wall_time.txt")
+  errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
+  echo "$family,$name,$cell,$ppc,$shape,$ms,$speed,$cost,$errors" >> "$csv.tmp"
+done < "$out/knobs.txt"
+mv "$csv.tmp" "$csv"
+
+# Pareto plot: CPU time against the curve error, one colour per family; the line joins each
+# family's Pareto front (no cheaper run has a smaller error). The reference (error 0) is left out.
+awk -F, 'NR > 1 && $2 != "ref" { print $1, $10, $12, $2 }' "$csv" | sort -k1,1 -k2,2g > "$out/pareto-points.dat"
+awk '{ if ($1 != fam) { fam = $1; best = 1e300; print "" ; print "" } if ($3 < best) { best = $3; print } }' \
+  "$out/pareto-points.dat" | sed '1,2d' > "$out/pareto-front.dat"
+cat > "$out/pareto.gp" <<'GP'
+# Trade-off: CPU time of a run against its error (pipelines/tradeoff/report.sh)
+set logscale xy
+set xlabel "CPU time of the run (s, one thread)"
+set ylabel "load-displacement error against the finest run"
+set key below
+set grid
+set title "Speed against accuracy: one knob at a time (labels: the knob changed)"
+plot "pareto-points.dat" using 2:($1 eq "column" ? $3 : 1/0):4 with labels offset 0,0.7 font ",8" notitle, \
+     "" using 2:($1 eq "column" ? $3 : 1/0) with points pt 7 lc 1 title "column t = 1.6 mm (ref: cell 0.2 mm)", \
+     "" using 2:($1 eq "lattice" ? $3 : 1/0):4 with labels offset 0,0.7 font ",8" notitle, \
+     "" using 2:($1 eq "lattice" ? $3 : 1/0) with points pt 5 lc 2 title "T2P30 2x2x1 (ref: cell 0.4 mm)", \
+     "pareto-front.dat" index 0 using 2:3 with lines lc 1 dt 2 title "Pareto front, column", \
+     "" index 1 using 2:3 with lines lc 2 dt 2 title "Pareto front, lattice"
+GP
+if command -v gnuplot > /dev/null; then
+  (cd "$out" && gnuplot -e 'set terminal pngcairo size 1000,700; set output "pareto.png"' pareto.gp \
+   && gnuplot -e 'set terminal svg size 1000,700; set output "pareto.svg"' pareto.gp)
+fi
+
+{
+  echo "# Trade-off: speed against accuracy"
+  echo
+  echo "Made by \`make tradeoff\` (pipelines/tradeoff.mk) on $(date -u +%Y-%m-%d). Cost: CPU time of"
+  echo "the solver (user + system, one thread per run under \`make -j2\`) and wall time. Errors"
+  echo "against each family's reference (\`ref\`, the finest run), definitions in"
+  echo "pipelines/tradeoff/errors.sh: curve = relative L2 difference of the binned"
+  echo "load-displacement curves; peak = peak load; late = post-buckling load (column) or work"
+  echo "∫F du (lattice); Euler = column post-buckling load against the Euler load 0.4961 N;"
+  echo "KE/SE = largest kinetic / strain energy over the second half of the travel."
+  echo
+  echo "| family | run | cell (mm) | ppc | shape | mass scaling | v0 (mm/s) | points | steps | CPU (s) | wall (s) | curve error | peak error | late error | Euler error | KE/SE |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  awk -F, 'NR > 1 {
+    pct = "%+.1f %%"
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f %% | %+.1f %% | %+.1f %% | %s | %.2g |\n",
+      $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, 100 * $12, 100 * $13, 100 * $14,
+      ($15 == "" ? "–" : sprintf("%+.1f %%", 100 * $15)), $16 }' "$csv"
+  echo
+  echo "![Pareto plot](pareto.png)"
+  echo
+  echo "Plots of every family: [column/summary.md](column/summary.md), [lattice/summary.md](lattice/summary.md)."
+} > "$out/summary.md.tmp"
+mv "$out/summary.md.tmp" "$out/summary.md"
