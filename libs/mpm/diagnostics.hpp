@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mpm/real.hpp"
+#include "mpm/rigid_body.hpp"
 
 namespace latmpm::mpm {
 
@@ -35,6 +36,22 @@ struct StepDiagnostics {
   // (minus what PIC damping and contact dissipate).
   Real external_work = 0;
   Real max_speed = 0;       // max |v_p| over deformable points after the step, m/s
+
+  // Geometric rigid bodies (rigid_body.hpp), indexed like Simulation::rigid_bodies(): state
+  // at the end of the step (reaction: force of the body on the model during the step).
+  std::vector<RigidBodyState> rigid;
+
+  // Energy accounting (docs/solver.md, "Energy"). constraint_work: ∫ Σ r · v dt of the
+  // point-defined fixed and driven bodies (zero for a fixed base); gravity_work: gravity's
+  // work on the deformable material; rigid_energy: Σ kinetic + potential energy of the free
+  // rigid bodies; energy_error: (kinetic + strain + rigid_energy) − their initial value −
+  // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact,
+  // dissipation-free scheme; MPM's grid-to-particle projection and FLIP/PIC blending
+  // dissipate a little, so it drifts negative.
+  Real constraint_work = 0;
+  Real gravity_work = 0;
+  Real rigid_energy = 0;
+  Real energy_error = 0;
 };
 
 }  // namespace latmpm::mpm

@@ -93,6 +93,22 @@ Particles& Simulation::mutable_particles() {
 
 void Simulation::add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
 
+void Simulation::add_rigid_body(const RigidBodySettings& body) {
+  const std::string where = "rigid_bodies." + body.name;
+  if (diagnostics_.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
+  for (const auto& b : rigid_bodies_)
+    if (b.name == body.name) throw InputError(where, "", "is given twice");
+  validate(body, "scene");
+  rigid_bodies_.push_back(body);
+  RigidBodyState state;
+  state.velocity = body.velocity;
+  initial_rigid_energy_ += rigid_kinetic_energy(body, state);
+  rigid_states_.push_back(state);
+  diagnostics_.rigid = rigid_states_;
+  diagnostics_.rigid_energy = initial_rigid_energy_;
+  impl_->refresh_needed = true;  // its speed enters the stable time step
+}
+
 Real Simulation::stable_time_step() const { return impl_->stable_time_step(); }
 
 Real Simulation::next_time_step() const {
@@ -147,7 +163,7 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.time += dt;
   d.dt = dt;
   d.stable_dt = stable;
-  Real power = im.sums.gravity_power;
+  Real power = im.sums.gravity_power, constraint_power = 0;
   for (size_t b = 0; b < bodies_.size(); ++b) {
     switch (bodies_[b].role) {
       case BodyRole::deformable:
@@ -161,10 +177,27 @@ void Simulation::finish_step(Real dt, Real stable) {
         d.body_displacement[b] += dt * bodies_[b].velocity;
         d.reaction[b] = im.reactions.force[b];
         power += im.reactions.power[b];
+        constraint_power += im.reactions.power[b];
         break;
     }
   }
+  // Geometric rigid bodies: their reactions of this step at V^n, then they move (rigid_body.hpp).
+  Real rigid_energy = 0, rigid_speed = 0;
+  for (size_t k = 0; k < rigid_bodies_.size(); ++k) {
+    const Vec3 r = k < im.rigid_reactions.size() ? im.rigid_reactions[k] : Vec3::Zero();
+    const Real rigid_power = r.dot(rigid_states_[k].velocity);
+    power += rigid_power;
+    if (rigid_bodies_[k].motion == RigidMotion::driven) driven_rigid_work_ += dt * rigid_power;
+    advance_rigid_body(rigid_bodies_[k], rigid_states_[k], r, settings_.gravity, dt);
+    rigid_energy += rigid_kinetic_energy(rigid_bodies_[k], rigid_states_[k]) +
+                    rigid_potential_energy(rigid_bodies_[k], rigid_states_[k], settings_.gravity);
+    rigid_speed = std::max(rigid_speed, rigid_states_[k].velocity.norm());
+  }
+  d.rigid = rigid_states_;
+  d.rigid_energy = rigid_energy;
   d.external_work += dt * power;
+  d.constraint_work += dt * constraint_power;
+  d.gravity_work += dt * im.sums.gravity_power;
   d.kinetic_energy = im.sums.kinetic;
   d.strain_energy = im.sums.strain;
   d.record_force = im.sums.record_volume > 0 ? record_area_ * im.sums.record_stress_volume / im.sums.record_volume : 0;
@@ -173,7 +206,9 @@ void Simulation::finish_step(Real dt, Real stable) {
   Real driven_speed = 0;
   for (const auto& b : im.body_info)
     if (b.role == BodyRole::driven) driven_speed = std::max(driven_speed, b.velocity.norm());
-  im.max_speed = std::max(d.max_speed, driven_speed);
+  im.max_speed = std::max({d.max_speed, driven_speed, rigid_speed});
+  d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - im.initial_energy - initial_rigid_energy_ -
+                   d.constraint_work - d.gravity_work - driven_rigid_work_;
   if (im.sums.max_wave_speed_sq > 0) im.max_wave_speed = std::sqrt(im.sums.max_wave_speed_sq);
 
   const Real budget = std::max(im.initial_energy + d.external_work, Real(0));

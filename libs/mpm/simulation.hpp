@@ -20,6 +20,7 @@
 #include "mpm/body.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/particles.hpp"
+#include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
 
 namespace latmpm {
@@ -49,6 +50,11 @@ class Simulation {
   void run_until(Real end_time);
   // Called after every step with the state at the end of that step.
   void add_observer(Observer observer);
+  // A geometric rigid body (rigid_body.hpp: a driven plate or a free flyer); before the
+  // first step. Throws InputError for invalid settings, a duplicate name or a started run.
+  void add_rigid_body(const RigidBodySettings& body);
+  const std::vector<RigidBodySettings>& rigid_bodies() const { return rigid_bodies_; }
+  const std::vector<RigidBodyState>& rigid_states() const { return rigid_states_; }
 
   // The time step the next step() will take (s): the automatic stable step, or the fixed
   // one. Throws NumericalError if a fixed step exceeds the stable limit.
@@ -106,6 +112,10 @@ class Simulation {
   StepDiagnostics diagnostics_;
   std::vector<Observer> observers_;
   Real record_area_ = 0;
+  std::vector<RigidBodySettings> rigid_bodies_;
+  std::vector<RigidBodyState> rigid_states_;
+  Real initial_rigid_energy_ = 0;  // J, Σ kinetic + potential of free rigid bodies at the start
+  Real driven_rigid_work_ = 0;     // J, work of driven rigid bodies on the model so far
 };
 
 }  // namespace latmpm::mpm

@@ -51,6 +51,7 @@ struct Simulation::Impl {
   Real initial_energy = 0;       // J
   std::vector<Vec3> initial_centre;  // per body, m
   Reactions reactions;
+  std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
 
   explicit Impl(Simulation& s, int threads)
       : sim(s), arena(threads > 0 ? threads : tbb::task_arena::automatic) {}
@@ -176,6 +177,7 @@ struct Simulation::Impl {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
+    couple_rigid(dt);
     gather<Shape, GatherAll>(dt);
   }
 
@@ -184,11 +186,13 @@ struct Simulation::Impl {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
+    couple_rigid(dt);
     gather<Shape, GatherVelocity>(dt);
     // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterRemap>();
     grid_velocity_from_momentum(grid, lane::force, lane::force, body_info);
+    impose_rigid_velocities(grid, settings().cell_size, lane::force, sim.rigid_bodies_, sim.rigid_states_);
     gather<Shape, GatherStrainAndPosition>(dt);
   }
 
@@ -198,11 +202,18 @@ struct Simulation::Impl {
     scatter<Shape, ScatterMomentum>();
     // Stress first, from the velocity at the start of the step (lanes 4–6).
     grid_velocity_from_momentum(grid, lane::momentum, lane::force, body_info);
+    impose_rigid_velocities(grid, settings().cell_size, lane::force, sim.rigid_bodies_, sim.rigid_states_);
     gather<Shape, GatherStrain>(dt);
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterForce>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
+    couple_rigid(dt);
     gather<Shape, GatherMotion>(dt);
+  }
+
+  // Geometric rigid bodies take their nodes after the grid update (rigid_body.hpp).
+  void couple_rigid(Real dt) {
+    rigid_reactions = couple_rigid_bodies(grid, settings().cell_size, dt, sim.rigid_bodies_, sim.rigid_states_);
   }
 
   // --- Sums, diagnostics and checks ------------------------------------------------------
@@ -286,6 +297,7 @@ struct Simulation::Impl {
       else
         max_speed = std::max(max_speed, body_info[b].velocity.norm());
     }
+    for (const auto& r : sim.rigid_states_) max_speed = std::max(max_speed, r.velocity.norm());
     std::vector<Vec3> mx(nb, Vec3::Zero());
     std::vector<Real> mass(nb, 0);
     for (size_t p = 0; p < ps.size(); ++p) {

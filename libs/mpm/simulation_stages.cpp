@@ -19,7 +19,10 @@ void Simulation::stage_particles_to_grid() {
 
 void Simulation::stage_grid_update(Real dt) {
   auto& im = *impl_;
-  im.arena.execute([&] { im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info); });
+  im.arena.execute([&] {
+    im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
+    im.couple_rigid(dt);
+  });
   im.grid_holds_velocity = true;
 }
 

@@ -139,6 +139,37 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
   }
 }
 
+// Sums over a particle's stencil of the node lanes n_i of the bucket buffer:
+// aw = Σ S_i n_i and, with gradients, ax = Σ ∂xS_i n_i, ay = Σ ∂yS_i n_i, az = Σ ∂zS_i n_i.
+// Per row (i, j) first rw = Σ_k Sz_k n_k and rd = Σ_k Sz'_k n_k, then weighted by Sx, Sy.
+struct Interpolation {
+  NodeLanes aw, ax, ay, az;
+};
+
+template <bool Gradient, int N>
+[[gnu::always_inline]] inline Interpolation interpolate(const Stencil<N>& st, const BucketBuffer& buffer) {
+  const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+  Interpolation out{};
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
+      NodeLanes rw{}, rd{};
+      for (int k = 0; k < N; ++k) {
+        const NodeLanes node = load_lanes(row + k * lane::count);
+        rw += st.w[k][2] * node;
+        if constexpr (Gradient) rd += st.dw[k][2] * node;
+      }
+      const Real wij = st.w[i][0] * st.w[j][1];
+      out.aw += wij * rw;
+      if constexpr (Gradient) {
+        out.ax += (st.dw[i][0] * st.w[j][1]) * rw;
+        out.ay += (st.w[i][0] * st.dw[j][1]) * rw;
+        out.az += wij * rd;
+      }
+    }
+  return out;
+}
+
 // One particle's fault, kept if it is the bucket's first.
 inline void note_fault(BucketTally& t, ParticleFault f, uint32_t p) {
   if (t.fault == ParticleFault::none) t.fault = f, t.fault_particle = p;
@@ -159,8 +190,6 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                    RunTally* run_tally) {
   const Real h = par.h, dt = par.dt, flip = par.flip;
   const Vec3& gravity = par.gravity;
-  constexpr int N = Shape::nodes_per_axis;
-  constexpr int L = lane::count;
   constexpr bool gradient = Mode::gradient_lane >= 0;
   const Real inv_h = 1 / h;
   tally = BucketTally{};
@@ -234,27 +263,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             for (int q = 0; q < n; ++q) {
               const uint32_t p = g0 + uint32_t(q);
               const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
-              const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-              // aw = Σ S_i n_i, ax = Σ ∂xS_i n_i, ... over the node lanes n_i; per row (i, j)
-              // first rw = Σ_k Sz_k n_k and rd = Σ_k Sz'_k n_k, then weighted by Sx, Sy.
-              NodeLanes aw{}, ax{}, ay{}, az{};
-              for (int i = 0; i < N; ++i)
-                for (int j = 0; j < N; ++j) {
-                  const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-                  NodeLanes rw{}, rd{};
-                  for (int k = 0; k < N; ++k) {
-                    const NodeLanes node = load_lanes(row + k * L);
-                    rw += st.w[k][2] * node;
-                    if constexpr (gradient) rd += st.dw[k][2] * node;
-                  }
-                  const Real wij = st.w[i][0] * st.w[j][1];
-                  aw += wij * rw;
-                  if constexpr (gradient) {
-                    ax += (st.dw[i][0] * st.w[j][1]) * rw;
-                    ay += (st.w[i][0] * st.dw[j][1]) * rw;
-                    az += wij * rd;
-                  }
-                }
+              const auto [aw, ax, ay, az] = interpolate<gradient>(st, buffer);
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];
                 dv[a][q] = aw[lane::force + a];

@@ -1,0 +1,133 @@
+#include "mpm/rigid_body.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "mpm/sparse_grid.hpp"
+
+namespace latmpm::mpm {
+
+std::string to_string(RigidShape shape) { return shape == RigidShape::box ? "box" : "half_space"; }
+std::string to_string(RigidMotion motion) { return motion == RigidMotion::driven ? "driven" : "free"; }
+
+void validate(const RigidBodySettings& b, const std::string& where) {
+  const std::string key = "rigid_bodies." + b.name + ".";
+  if (b.shape == RigidShape::box) {
+    if (!b.box_min.allFinite() || !b.box_max.allFinite()) throw InputError(where, key + "min", "must be finite");
+    for (int a = 0; a < 3; ++a)
+      if (!(b.box_max[a] > b.box_min[a]))
+        throw InputError(where, key + "max", "must exceed min along every axis (an empty box)");
+  } else {
+    if (!b.plane_point.allFinite()) throw InputError(where, key + "point", "must be finite");
+    if (!b.plane_normal.allFinite() || !(b.plane_normal.norm() > 0))
+      throw InputError(where, key + "normal", "must be a non-zero direction");
+  }
+  if (!b.velocity.allFinite()) throw InputError(where, key + "velocity", "must be finite");
+  if (b.motion == RigidMotion::free && !(b.mass > 0 && std::isfinite(b.mass)))
+    throw InputError(where, key + "mass", "a free rigid body needs a positive mass");
+}
+
+bool rigid_body_contains(const RigidBodySettings& b, const Vec3& d, const Vec3& x, Real h) {
+  // The node's support, the open cube |x − x_i| < h per axis, must overlap the body: exactly
+  // the nodes a heavy-particle plate of the same extent touches (its points' domains end at
+  // its surface, and their stencils reach one cell beyond). A node exactly one cell away is
+  // not coupled yet (weight zero), so a body touching a surface that lies on a node plane
+  // picks up that plane at once and the next one as soon as it moves.
+  const Real reach = h * (1 - 1e-9);
+  if (b.shape == RigidShape::box) {
+    for (int a = 0; a < 3; ++a)
+      if (!(x[a] > b.box_min[a] + d[a] - reach && x[a] < b.box_max[a] + d[a] + reach)) return false;
+    return true;
+  }
+  return (x - b.plane_point - d).dot(b.plane_normal.normalized()) < reach;
+}
+
+namespace {
+// Calls fn(node, body) for every node with mass, free of point-body constraints, inside a
+// rigid body (the first that contains it), block by block in parallel; fn gets the block index.
+template <class Fn>
+void for_each_rigid_node(SparseGrid& grid, Real h, const std::vector<RigidBodySettings>& bodies,
+                         const std::vector<RigidBodyState>& states, Fn&& fn) {
+  constexpr int bw = SparseGrid::block_width;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.block_count(), 8), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t b = r.begin(); b < r.end(); ++b) {
+      const auto c = grid.coord(b);
+      Real* block = grid.block(b);
+      for (int i = 0; i < bw; ++i)
+        for (int j = 0; j < bw; ++j)
+          for (int k = 0; k < bw; ++k) {
+            Real* node = block + SparseGrid::node_offset(i, j, k);
+            if (!(node[lane::mass] > 0) || node[lane::constraint] > 0) continue;
+            const Vec3 x = SparseGrid::node_position(c[0] * bw + i, c[1] * bw + j, c[2] * bw + k, h);
+            for (size_t body = 0; body < bodies.size(); ++body)
+              if (rigid_body_contains(bodies[body], states[body].displacement, x, h)) {
+                fn(b, node, body);
+                break;
+              }
+          }
+    }
+  });
+}
+}  // namespace
+
+std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,
+                                      const std::vector<RigidBodySettings>& bodies,
+                                      const std::vector<RigidBodyState>& states) {
+  const size_t nb = bodies.size();
+  std::vector<Vec3> out(nb, Vec3::Zero());
+  if (nb == 0) return out;
+  std::vector<Vec3> block_force(grid.block_count() * nb, Vec3::Zero());
+  for_each_rigid_node(grid, h, bodies, states, [&](size_t b, Real* node, size_t body) {
+    const Vec3& V = states[body].velocity;
+    const Real m = node[lane::mass];
+    Vec3 change;
+    for (int a = 0; a < 3; ++a) {
+      change[a] = V[a] - node[lane::momentum + a];
+      node[lane::momentum + a] = V[a];
+      node[lane::force + a] += change[a];  // Δv = V − v_old
+    }
+    block_force[b * nb + body] += (m / dt) * change;
+  });
+  for (size_t b = 0; b < grid.block_count(); ++b)
+    for (size_t k = 0; k < nb; ++k) out[k] += block_force[b * nb + k];
+  return out;
+}
+
+void impose_rigid_velocities(SparseGrid& grid, Real h, int lane,
+                             const std::vector<RigidBodySettings>& bodies,
+                             const std::vector<RigidBodyState>& states) {
+  if (bodies.empty()) return;
+  for_each_rigid_node(grid, h, bodies, states, [&](size_t, Real* node, size_t body) {
+    for (int a = 0; a < 3; ++a) node[lane + a] = states[body].velocity[a];
+  });
+}
+
+void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& s, const Vec3& reaction,
+                        const Vec3& gravity, Real dt) {
+  s.reaction = reaction;
+  s.work += dt * reaction.dot(s.velocity);
+  if (body.motion == RigidMotion::driven) {
+    s.velocity = body.velocity;
+    s.displacement += dt * body.velocity;
+    return;
+  }
+  // The specimen pushes the body with −reaction (Newton's third law).
+  const Vec3 acceleration = (body.gravity ? gravity : Vec3::Zero()) - reaction / body.mass;
+  const Vec3 v_old = s.velocity;
+  s.velocity = v_old + dt * acceleration;
+  s.displacement += (dt / 2) * (v_old + s.velocity);
+}
+
+Real rigid_kinetic_energy(const RigidBodySettings& body, const RigidBodyState& s) {
+  return body.motion == RigidMotion::free ? Real(0.5) * body.mass * s.velocity.squaredNorm() : Real(0);
+}
+
+Real rigid_potential_energy(const RigidBodySettings& body, const RigidBodyState& s, const Vec3& gravity) {
+  if (body.motion != RigidMotion::free || !body.gravity) return 0;
+  return -body.mass * gravity.dot(s.displacement);
+}
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,95 @@
+// Rigid bodies as geometry, not particles: a box or a half-space that is either driven at a
+// prescribed velocity (a compressing plate) or free, with a mass, an initial velocity and
+// gravity (paper A Sec. 6: the 10 kg impact flyer at 2 m/s). They need no 1e6-density
+// particles and carry no mass to the grid.
+//
+// Coupling through the grid, no-slip as in paper A (its heavy-particle plates stick too):
+// after the explicit grid update, every node with mass whose support (the cube of one cell
+// around it) overlaps the body's current geometry takes the body's velocity — the nodes a
+// heavy-particle plate of the same extent would touch, so the two load a specimen alike
+// (a node merely inside the geometry would let the surface material slip away from the
+// body between node planes: the contact force then sags by tens of percent). The force on the body is the momentum change that
+// imposes, r = Σ m_i (V − v_i)/dt over those nodes (v_i the node's velocity after the free
+// update, so r already nets out the node's internal force and gravity) — the same reaction
+// the point-defined fixed and driven bodies report (docs/solver.md, "Boundary conditions").
+//
+// Order within a step n (docs/solver.md, "Rigid bodies"): the grid update uses V^n and the
+// geometry at X^n and yields the reaction R^n (force of the body on the model); then a free
+// body integrates M dV/dt = −R^n + M g:
+//   V^{n+1} = V^n + dt (g − R^n/M),   X^{n+1} = X^n + dt (V^n + V^{n+1})/2,
+// which is exact for constant acceleration (a body under gravity alone falls exactly).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "mpm/real.hpp"
+
+namespace latmpm::mpm {
+
+class SparseGrid;
+
+enum class RigidShape {
+  box,         // axis-aligned box [box_min, box_max] at t = 0, translated with the body
+  half_space,  // {x : (x − plane_point)·plane_normal ≤ 0}: the solid lies behind the plane,
+               // the normal points out of the body (toward the specimen)
+};
+
+enum class RigidMotion {
+  driven,  // moves at `velocity` whatever the force on it
+  free,    // M dV/dt = force from the specimen + M g (if `gravity`); `velocity` is V(0)
+};
+
+std::string to_string(RigidShape shape);
+std::string to_string(RigidMotion motion);
+
+struct RigidBodySettings {
+  std::string name;
+  RigidShape shape = RigidShape::box;
+  Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();          // m (box)
+  Vec3 plane_point = Vec3::Zero(), plane_normal = Vec3::UnitZ();  // m, unit (half_space)
+  RigidMotion motion = RigidMotion::driven;
+  Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free)
+  Real mass = 0;                 // kg, free bodies
+  bool gravity = true;           // free bodies: Settings::gravity acts on them
+};
+
+// Throws InputError(where, "rigid_bodies.<name>.<key>", ...) for an empty or inverted box, a
+// zero normal, a free body without a positive mass, non-finite values.
+void validate(const RigidBodySettings& body, const std::string& where);
+
+// What changes during a run.
+struct RigidBodyState {
+  Vec3 displacement = Vec3::Zero();  // m, X − X(0)
+  Vec3 velocity = Vec3::Zero();      // m/s, V
+  Vec3 reaction = Vec3::Zero();      // N, force of the body on the model in the last step
+  Real work = 0;                     // J, ∫ reaction · V dt: work done on the model
+};
+
+// Whether the node at x (m) is coupled to the body displaced by d: its support, the open
+// cube of half-width h (the cell size) around it, overlaps the body.
+bool rigid_body_contains(const RigidBodySettings& body, const Vec3& displacement, const Vec3& x, Real h);
+
+// After update_grid_velocities (lanes m, v_new, Δv, constraint): every node with mass, not
+// held by a point-defined body, inside body k takes V_k; Δv is corrected to match. Returns
+// per body the reaction Σ m (V − v_new)/dt (N). Nodes inside two bodies go to the first.
+// Deterministic (per-block sums added in block order).
+std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,
+                                      const std::vector<RigidBodySettings>& bodies,
+                                      const std::vector<RigidBodyState>& states);
+
+// The same constraint on a velocity field in lanes [lane, lane + 3) without reactions (MUSL's
+// remapped velocity, USF's start-of-step velocity).
+void impose_rigid_velocities(SparseGrid& grid, Real h, int lane,
+                             const std::vector<RigidBodySettings>& bodies,
+                             const std::vector<RigidBodyState>& states);
+
+// Advances a body over a step of length dt after the grid update gave its reaction.
+void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& state, const Vec3& reaction,
+                        const Vec3& gravity, Real dt);
+
+// Kinetic energy ½ M V² and potential energy −M g·(X − X(0)) of a free body (J); zero for
+// driven bodies (their energy is not part of the model: they are a boundary condition).
+Real rigid_kinetic_energy(const RigidBodySettings& body, const RigidBodyState& state);
+Real rigid_potential_energy(const RigidBodySettings& body, const RigidBodyState& state, const Vec3& gravity);
+
+}  // namespace latmpm::mpm
