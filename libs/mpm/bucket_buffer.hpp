@@ -23,6 +23,9 @@ struct BucketBuffer {
 
   std::vector<Real> data = std::vector<Real>(size_t(width) * width * width * lane::count);
   std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
+  // DDMP only (cell_occupancy.hpp): 1 for each cell of the buffer (named by its lowest
+  // node, same indexing as the nodes without lanes) that holds deformable material.
+  std::vector<uint8_t> occupied;
 
   void attach(const Bucket& b) {
     for (int a = 0; a < 3; ++a) origin[a] = ParticleBuckets::cells * b.coord[a] + ParticleBuckets::buffer_lo;

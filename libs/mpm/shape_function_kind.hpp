@@ -10,9 +10,10 @@ enum class ShapeFunctionKind {
   cpgimp,     // GIMP with the domain stretched by the diagonal of F (64-node stencil)
   bspline2,   // quadratic B-spline (27 nodes)
   bspline3,   // cubic B-spline (64 nodes)
+  ddmp,       // dual domain MPM: linear S, modified gradient ∇̄S (Paper A Eq. 7; 64 nodes)
 };
 
-// "linear", "ugimp", "cpgimp", "bspline2", "bspline3".
+// "linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp".
 std::string to_string(ShapeFunctionKind kind);
 // Inverse of to_string; throws InputError(where, field, ...) for an unknown name.
 ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where = "",

@@ -51,6 +51,7 @@ struct Simulation::Impl {
   Real initial_energy = 0;       // J
   std::vector<Vec3> initial_centre;  // per body, m
   Reactions reactions;
+  std::vector<uint64_t> occupancy;  // DDMP: cells holding deformable material (cell_occupancy.hpp)
   std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
 
   explicit Impl(Simulation& s, int threads)
@@ -111,6 +112,12 @@ struct Simulation::Impl {
           for (int k = 0; k < 4; ++k)
             tables[bi][(i * 4 + j) * 4 + k] = grid.find(first[0] + i, first[1] + j, first[2] + k);
     }
+    if constexpr (has_smoothed_gradient<Shape>::value) {
+      std::vector<bool> deformable;
+      for (const auto& b : body_info) deformable.push_back(b.role == BodyRole::deformable);
+      mark_occupied_cells(buckets, tables, particles(), deformable, settings().cell_size, occupancy,
+                          grid.block_count());
+    }
     clear_grid(grid);
     grid_holds_velocity = false;
     tallies.assign(list.size(), BucketTally{});
@@ -143,6 +150,7 @@ struct Simulation::Impl {
         for (size_t c = r.begin(); c < r.end(); ++c) {
           const Bucket& b = list[colour[c]];
           buffer.attach(b);
+          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, buffer);
           clear_box(b, buffer);
           scatter_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
                                       settings().cell_size, buffer);
@@ -162,6 +170,7 @@ struct Simulation::Impl {
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
+        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, buffer);
         copy_box_from_grid(b, tables[bi], grid, buffer);
         gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
                                    buffer, tallies[bi], &run_tallies[b.run_begin]);

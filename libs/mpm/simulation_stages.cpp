@@ -68,7 +68,6 @@ Simulation::Gathered Simulation::gather_from_grid() const {
   Gathered out;
   out.velocity.resize(copy.size());
   out.velocity_gradient.resize(copy.size());
-  const Real inv_h = 1 / settings_.cell_size;
   BucketBuffer buffer;
   with_shape_function(settings_.shape_function, [&](auto shape) {
     using Shape = decltype(shape);
@@ -76,9 +75,10 @@ Simulation::Gathered Simulation::gather_from_grid() const {
     for (size_t bi = 0; bi < im.buckets.buckets().size(); ++bi) {
       const Bucket& b = im.buckets.buckets()[bi];
       buffer.attach(b);
+      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, buffer);
       copy_box_from_grid(b, im.tables[bi], im.grid, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {
-        const auto st = make_stencil<Shape>(copy.position[p], stencil_half_size<Shape>(copy, p, settings_.cell_size), inv_h);
+        const auto st = particle_stencil<Shape>(copy, p, settings_.cell_size, buffer);
         Vec3 v = Vec3::Zero();
         Mat3 grad = Mat3::Zero();
         for (int i = 0; i < N; ++i)
@@ -92,6 +92,14 @@ Simulation::Gathered Simulation::gather_from_grid() const {
               v += w * vi;
               grad += vi * dw.transpose();
             }
+        if constexpr (has_smoothed_gradient<Shape>::value)
+          for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+              for (int k = 0; k < N; ++k) {
+                const Real* node = buffer.data.data() + buffer.offset(st.base[0] + i, st.base[1] + j, st.base[2] + k);
+                const Vec3 vi(node[lane::momentum], node[lane::momentum + 1], node[lane::momentum + 2]);
+                grad += vi * st.smoothed[(i * N + j) * N + k].transpose();
+              }
         out.velocity[p] = v;
         out.velocity_gradient[p] = grad;
       }

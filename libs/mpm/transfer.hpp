@@ -14,6 +14,7 @@
 
 #include "mpm/body.hpp"
 #include "mpm/bucket_buffer.hpp"
+#include "mpm/cell_occupancy.hpp"
 #include "mpm/material_model.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
@@ -81,18 +82,27 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
   }
 }
 
+// The stencil of particle p: the shape's tensor-product stencil, or DDMP's with the
+// occupancy of the cells around the particle (from the bucket buffer, cell_occupancy.hpp).
+template <class Shape>
+inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
+  if constexpr (has_smoothed_gradient<Shape>::value)
+    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h));
+  else
+    return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
+}
+
 template <class Shape, class Mode>
 void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                     const BodyInfo* bodies, Real h, BucketBuffer& buffer) {
   constexpr int N = Shape::nodes_per_axis;
   constexpr int L = lane::count;
-  const Real inv_h = 1 / h;
   for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
     if (rigid && !Mode::constraint) continue;
     for (uint32_t p = run.begin; p < run.end; ++p) {
-      const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
+      const auto st = particle_stencil<Shape>(ps, p, h, buffer);
       Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
       if (rigid) {
         // Rigid points carry no mass to the grid; they mark the nodes they touch.
@@ -135,6 +145,16 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
             for (int k = 0; k < N; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
           }
         }
+      if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
+        // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
+        for (int i = 0; i < N; ++i)
+          for (int j = 0; j < N; ++j)
+            for (int k = 0; k < N; ++k) {
+              Real* node = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L;
+              const Vec3& g = st.smoothed[(i * N + j) * N + k];
+              store_lanes(node, load_lanes(node) + g[0] * fx + g[1] * fy + g[2] * fz);
+            }
+      }
     }
   }
 }
@@ -167,6 +187,26 @@ template <bool Gradient, int N>
         out.az += wij * rd;
       }
     }
+  return out;
+}
+
+// DDMP: the tensor-product part (S, α∇S), then the smoothed gradient node by node.
+template <bool Gradient>
+[[gnu::always_inline]] inline Interpolation interpolate(const DdmpStencil& st, const BucketBuffer& buffer) {
+  Interpolation out = interpolate<Gradient, 4>(static_cast<const Stencil<4>&>(st), buffer);
+  if constexpr (Gradient) {
+    const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k) {
+          const NodeLanes node =
+              load_lanes(first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * lane::count);
+          const Vec3& g = st.smoothed[(i * 4 + j) * 4 + k];
+          out.ax += g[0] * node;
+          out.ay += g[1] * node;
+          out.az += g[2] * node;
+        }
+  }
   return out;
 }
 
@@ -262,7 +302,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             Pack v_grid[3] = {}, dv[3] = {}, grad_v[3][3] = {};
             for (int q = 0; q < n; ++q) {
               const uint32_t p = g0 + uint32_t(q);
-              const auto st = make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), inv_h);
+              const auto st = particle_stencil<Shape>(ps, p, h, buffer);
               const auto [aw, ax, ay, az] = interpolate<gradient>(st, buffer);
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "mpm/material.hpp"
+#include "mpm/rigid_body.hpp"
 #include "mpm/shape_function_kind.hpp"
 
 namespace latmpm {
@@ -45,9 +46,33 @@ std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
   return bodies;
 }
 
+std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene) {
+  std::vector<mpm::RigidBodySettings> out;
+  for (const auto& r : scene.rigid_bodies) {
+    mpm::RigidBodySettings b;
+    b.name = r.name;
+    b.shape = r.shape == RigidBodySpec::box ? mpm::RigidShape::box : mpm::RigidShape::half_space;
+    b.box_min = r.min;
+    b.box_max = r.max;
+    b.plane_point = r.point;
+    b.plane_normal = r.normal.normalized();
+    b.motion = r.motion == RigidBodySpec::driven ? mpm::RigidMotion::driven : mpm::RigidMotion::free;
+    b.velocity = r.velocity;
+    b.mass = r.mass;
+    b.gravity = r.gravity;
+    mpm::validate(b, r.where);
+    out.push_back(b);
+  }
+  return out;
+}
+
 Eigen::Vector3d loading_axis(const Scene& scene) {
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::driven) return b.velocity.normalized();
+  for (const auto& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) return r.velocity.normalized();
+  for (const auto& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::free && r.velocity.norm() > 0) return r.velocity.normalized();
   if (scene.gravity.norm() > 0) return scene.gravity.normalized();
   return Eigen::Vector3d(0, 0, -1);
 }
@@ -56,6 +81,8 @@ double end_time(const Scene& scene) {
   if (scene.end.kind == EndCondition::time) return scene.end.value;
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::driven) return scene.end.value / b.velocity.norm();
+  for (const auto& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) return scene.end.value / r.velocity.norm();
   throw InputError(scene.end.where, "run.end.plate_displacement", "needs a driven body");
 }
 

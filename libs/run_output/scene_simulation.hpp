@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mpm/body.hpp"
+#include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
 #include "scene/scene.hpp"
 
@@ -15,13 +16,16 @@ mpm::Settings solver_settings(const Scene& scene, int threads);
 // density of the first deformable body (its motion is prescribed; the density only sets
 // the mass it reports).
 std::vector<mpm::BodySettings> solver_bodies(const Scene& scene);
+// The scene's [rigid_bodies], in scene order.
+std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene);
 
-// The loading axis: the unit direction of the (first) driven body's velocity; without a
-// driven body, the direction of gravity; without gravity, -z. Loads in the series are
+// The loading axis: the unit direction of the (first) driven body's velocity (point bodies
+// first, then rigid ones); without a driven body, that of the first free rigid body's
+// initial velocity (the flyer's approach); then the direction of gravity; without gravity, -z. Loads in the series are
 // components along it, compression positive.
 Eigen::Vector3d loading_axis(const Scene& scene);
 // Simulated time at which the run ends (s): the end time, or the plate displacement
-// divided by the driven body's speed.
+// divided by the driven body's speed (point or rigid).
 double end_time(const Scene& scene);
 
 }  // namespace latmpm

@@ -61,6 +61,13 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
                        "): " + std::to_string(count[b]) + " points\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
                                                   solver_settings(scene_, options_.threads), scene_.where);
+  for (const auto& r : solver_rigid_bodies(scene_)) simulation_->add_rigid_body(r);
+  for (const auto& r : scene_.rigid_bodies)
+    points_summary_ += "rigid body " + r.name + " (" + (r.motion == RigidBodySpec::free ? "free" : "driven") + " " +
+                       (r.shape == RigidBodySpec::box ? "box" : "half_space") +
+                       (r.motion == RigidBodySpec::free ? ", " + format("%g", r.mass) + " kg" : std::string()) +
+                       ", velocity " + format("%g", r.velocity.x()) + " " + format("%g", r.velocity.y()) + " " +
+                       format("%g", r.velocity.z()) + " m/s)\n";
 }
 
 SolveRun::~SolveRun() = default;
@@ -102,7 +109,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
            format("%g", axis.z()) + "), record area " + format("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
-  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", solver_series_columns(), provenance_);
+  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", solver_series_columns(has_flyer(sim)), provenance_);
   SnapshotWriter snapshots(run_dir, provenance_);
   series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
   snapshots.write(solver_snapshot(sim));

@@ -2,8 +2,8 @@
 
 namespace latmpm {
 
-std::vector<SeriesColumn> solver_series_columns() {
-  return {
+std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
+  std::vector<SeriesColumn> columns = {
       {"step", "1", "steps completed"},
       {"time", "s", "simulated time at the end of the step"},
       {"dt", "s", "time step of the step"},
@@ -15,7 +15,28 @@ std::vector<SeriesColumn> solver_series_columns() {
       {"strain_energy", "J", "sum V0 psi over deformable points"},
       {"external_work", "J", "work of driven-body reactions and gravity on the deformable material since the start"},
       {"max_speed", "m/s", "largest particle speed of deformable points"},
+      {"constraint_work", "J", "work of the fixed and driven point bodies' reactions (zero for a fixed base)"},
+      {"gravity_work", "J", "work of gravity on the deformable material"},
+      {"energy_error", "J",
+       "kinetic + strain + flyer energy - initial - constraint_work - gravity_work - driven rigid plates' work"},
   };
+  if (with_flyer) {
+    const std::vector<SeriesColumn> flyer = {
+        {"load_flyer", "N", "contact force on the free rigid bodies along the loading axis, compression positive"},
+        {"flyer_velocity", "m/s", "velocity of the first free rigid body along the loading axis"},
+        {"flyer_displacement", "m", "travel of the first free rigid body along the loading axis"},
+        {"flyer_kinetic_energy", "J", "1/2 M V^2 of the first free rigid body"},
+        {"flyer_potential_energy", "J", "-M g.(X - X0) of the first free rigid body"},
+    };
+    columns.insert(columns.end(), flyer.begin(), flyer.end());
+  }
+  return columns;
+}
+
+bool has_flyer(const mpm::Simulation& sim) {
+  for (const auto& r : sim.rigid_bodies())
+    if (r.motion == mpm::RigidMotion::free) return true;
+  return false;
 }
 
 std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
@@ -35,10 +56,35 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
       load_fixed = load_fixed - reaction.dot(axis);
     }
   }
-  return {double(d.step),   d.time,           d.dt,
-          displacement,     load_driven,      load_fixed,
-          0.0 - d.record_force,  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
-          d.external_work,  d.max_speed};
+  // Geometric rigid bodies: driven plates like driven point bodies; free ones are flyers.
+  const auto& rigid = sim.rigid_bodies();
+  double load_flyer = 0;
+  const mpm::RigidBodyState* flyer = nullptr;
+  const mpm::RigidBodySettings* flyer_settings = nullptr;
+  for (size_t k = 0; k < rigid.size() && k < d.rigid.size(); ++k) {
+    const double along = Eigen::Vector3d(d.rigid[k].reaction).dot(axis);
+    if (rigid[k].motion == mpm::RigidMotion::driven) {
+      load_driven += along;
+      if (!displacement_taken) displacement = Eigen::Vector3d(d.rigid[k].displacement).dot(axis);
+      displacement_taken = true;
+    } else {
+      load_flyer += along;
+      if (!flyer) flyer = &d.rigid[k], flyer_settings = &rigid[k];
+    }
+  }
+  std::vector<double> row = {double(d.step),   d.time,           d.dt,
+                             displacement,     load_driven,      load_fixed,
+                             0.0 - d.record_force,  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
+                             d.external_work,  d.max_speed,      d.constraint_work,
+                             d.gravity_work,   d.energy_error};
+  if (flyer) {
+    const Eigen::Vector3d g = sim.settings().gravity;
+    row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
+                           0.0 + Eigen::Vector3d(flyer->displacement).dot(axis),
+                           mpm::rigid_kinetic_energy(*flyer_settings, *flyer),
+                           0.0 + mpm::rigid_potential_energy(*flyer_settings, *flyer, g)});
+  }
+  return row;
 }
 
 ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) {

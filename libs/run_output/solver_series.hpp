@@ -17,7 +17,17 @@ namespace latmpm {
 //   load_driven =  Σ_driven reaction · a   (the specimen resists the plate)
 //   load_fixed  = −Σ_fixed  reaction · a   (the base holds the specimen up)
 //   load_record = −A σ̄_zz of the record layer (Paper A Sec. 5.1, the GIMP runs' measure)
-std::vector<SeriesColumn> solver_series_columns();
+//
+// Appended after those (older readers keep working): the energy accounting
+// constraint_work, gravity_work, energy_error (mpm/diagnostics.hpp); and, only when the
+// scene has a free rigid body (the flyer; docs/post.md reads these names), load_flyer
+// (Σ over free rigid bodies of reaction · a: the contact force on the flyer, compression
+// positive), and of the first free body flyer_velocity and flyer_displacement (along a),
+// flyer_kinetic_energy and flyer_potential_energy (−M g·(X − X0)). Driven rigid plates
+// count as driven bodies in displacement and load_driven.
+std::vector<SeriesColumn> solver_series_columns(bool with_flyer = false);
+// Whether the simulation has a free rigid body (the flyer columns are written).
+bool has_flyer(const mpm::Simulation& sim);
 std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
                                       const Eigen::Vector3d& axis);
 

@@ -12,7 +12,7 @@
 namespace latmpm {
 
 enum class BodyRole { deformable, fixed, driven };
-enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3 };
+enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp };
 enum class SchemeKind { usl, usf, musl };
 enum class MaterialModel { linear_elastic, neo_hookean };
 
@@ -20,6 +20,26 @@ const char* to_string(BodyRole role);
 const char* to_string(ShapeKind shape);
 const char* to_string(SchemeKind scheme);
 const char* to_string(MaterialModel model);
+
+// A rigid body given by its geometry ([rigid_bodies.<name>]): no points, no mass on the grid.
+struct RigidBodySpec {
+  enum Shape { box, half_space } shape = box;
+  enum Motion { driven, free } motion = driven;
+  Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // m (box)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();                                // m (half_space)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // out of the body, toward the specimen
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: prescribed (driven), initial (free)
+  double mass = 0;       // kg (free)
+  bool gravity = true;   // free: gravity acts on it
+  std::string name;
+  std::string where;
+};
+
+// When the run saves RUN_DIR/checkpoint.h5 (latmpm-solve --resume continues from it).
+struct CheckpointSpec {
+  long every_steps = 0;         // 0: not by steps
+  double every_minutes = 10;    // wall-clock minutes; 0: not by time
+};
 
 struct MaterialSpec {
   MaterialModel model = MaterialModel::linear_elastic;
@@ -67,6 +87,8 @@ struct Scene {
 
   std::vector<PointFileSpec> point_files;
   std::vector<BodySpec> bodies;  // in document order
+  std::vector<RigidBodySpec> rigid_bodies;  // in document order
+  CheckpointSpec checkpoint;
 
   long series_every = 100;    // steps between series rows
   long snapshot_every = 0;    // steps between particle snapshots, 0 = first and last only

@@ -6,6 +6,7 @@
 
 #include "mpm/body.hpp"
 #include "mpm/real.hpp"
+#include "mpm/settings.hpp"
 #include "points/point_set.hpp"
 
 namespace latmpm::mpm::test {
@@ -51,6 +52,15 @@ inline void tag_points(PointSet& ps, const std::string& tag,
   auto& mask = ps.tags[tag];
   mask.assign(ps.size(), 0);
   for (size_t p = 0; p < ps.size(); ++p) mask[p] = select(p) ? 1 : 0;
+}
+
+// The update scheme a test runs a shape function with: USL, except MUSL for DDMP, whose
+// modified gradient (like linear MPM's) stays O(1/h) at a node that a particle entering an
+// empty cell has just given a tiny mass — USL's velocity gradient from that node's huge
+// velocity inverts the particle; MUSL's remapped nodal velocity is a mass-weighted mean
+// of particle velocities and stays bounded (docs/solver.md, "DDMP").
+inline UpdateScheme scheme_for(ShapeFunctionKind shape) {
+  return shape == ShapeFunctionKind::ddmp ? UpdateScheme::musl : UpdateScheme::usl;
 }
 
 inline MaterialParameters elastic(double young, double poisson, double density,

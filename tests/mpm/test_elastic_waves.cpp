@@ -20,6 +20,12 @@ Settings settings_for(ShapeFunctionKind shape, Real h) {
   Settings s;
   s.cell_size = h;
   s.shape_function = shape;
+  s.scheme = scheme_for(shape);
+  // DDMP's smoothed gradient is 80 % a two-cell-wide difference (α ≤ 0.23 in 3D, Eq. 5):
+  // the most dispersive front of all. At cfl 0.5 its half-amplitude arrives 2.08 % late
+  // (USL 2.02 %), at the scenes' default cfl 0.3 1.98 %, at 0.2 1.91 % (measured); the long
+  // waves of the vibration test are within 0.2 %. It runs at the scene default here.
+  if (shape == ShapeFunctionKind::ddmp) s.cfl = 0.3;
   s.threads = 2;
   return s;
 }
@@ -36,7 +42,7 @@ Real mean_velocity_near(const Particles& ps, Real x, Real h) {
 
 TEST_CASE("A step wave in an elastic bar arrives at the speed set by modulus and density", "[mpm][waves]") {
   const auto shape = GENERATE(ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline2,
-                              ShapeFunctionKind::bspline3);
+                              ShapeFunctionKind::bspline3, ShapeFunctionKind::ddmp);
   const Real h = 1e-3, v0 = 0.01;  // m, m/s (v0 ≪ c: linear regime)
   PointSet points = empty_point_set(h, 2);
   add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(150 * h, h, h), "bar");
@@ -99,7 +105,8 @@ BarRun vibrate_bar(ShapeFunctionKind shape, UpdateScheme scheme, MaterialKind ma
 
 TEST_CASE("A free elastic bar vibrates axially with the analytic period", "[mpm][waves]") {
   const auto shape = GENERATE(ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::cpgimp,
-                              ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3);
+                              ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3,
+                              ShapeFunctionKind::ddmp);
   const auto scheme = GENERATE(UpdateScheme::usl, UpdateScheme::musl, UpdateScheme::usf);
   const BarRun run = vibrate_bar(shape, scheme, MaterialKind::linear_elastic);
   const Real period = 2 * 40e-3 / wave_speed;

@@ -65,12 +65,13 @@ TEST_CASE("A flyer striking an elastic block conserves momentum and energy", "[m
   // flyer, measured), 1e-4 in paper A's impact (10 kg on a few grams of plate per node
   // plane) — a resolution effect, O(h), as with the paper's heavy-particle flyer.
   const Real h = 1e-3, side = 6 * h, v0 = 0.5;
-  const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline2);
+  const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline2, ShapeFunctionKind::ddmp);
   PointSet points = empty_point_set(h, 2);
   add_points(points, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(side), "block");
   Settings s;
   s.cell_size = h;
   s.shape_function = shape;
+  s.scheme = scheme_for(shape);
   s.flip_blend = 1;  // pure FLIP: the transfers dissipate least
   s.threads = 2;
   Simulation sim(points, {deformable("block", elastic(1e6, 0.3, 1000))}, s);

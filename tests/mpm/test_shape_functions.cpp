@@ -105,7 +105,7 @@ TEMPLATE_TEST_CASE("GIMP weights match the piecewise formula of Bardenhagen and 
 
 TEST_CASE("Every shape function kind has a name that parses back", "[mpm][shape]") {
   for (auto kind : {ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::cpgimp,
-                    ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3})
+                    ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3, ShapeFunctionKind::ddmp})
     CHECK(parse_shape_function(to_string(kind)) == kind);
   CHECK_THROWS_WITH(parse_shape_function("gimp", "scene.toml", "solver.shape_function"),
                     Catch::Contains("scene.toml") && Catch::Contains("ugimp"));

@@ -13,7 +13,7 @@ using namespace latmpm::mpm;
 using namespace latmpm::mpm::test;
 
 TEST_CASE("Results are identical for one and two threads", "[mpm][simulation]") {
-  const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline3);
+  const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::bspline3, ShapeFunctionKind::ddmp);
   const Real h = 1e-3;
   PointSet points = empty_point_set(h, 2);
   add_points(points, Eigen::Vector3d(-9 * h, -3 * h, 0), Eigen::Vector3d(12 * h, 5 * h, 18 * h), "block");
@@ -25,6 +25,7 @@ TEST_CASE("Results are identical for one and two threads", "[mpm][simulation]") 
     Settings s;
     s.cell_size = h;
     s.shape_function = shape;
+    s.scheme = scheme_for(shape);
     s.threads = threads;
     Simulation sim(points, {deformable("block", elastic(1e6, 0.3, 1000)),
                             rigid("plate", BodyRole::driven, Vec3(0.5, 0, -2), 1000)}, s);

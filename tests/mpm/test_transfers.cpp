@@ -13,7 +13,7 @@ using namespace latmpm::mpm::test;
 
 namespace {
 const auto all_shapes = {ShapeFunctionKind::linear, ShapeFunctionKind::ugimp, ShapeFunctionKind::cpgimp,
-                         ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3};
+                         ShapeFunctionKind::bspline2, ShapeFunctionKind::bspline3, ShapeFunctionKind::ddmp};
 
 Settings settings_for(ShapeFunctionKind shape, Real h) {
   Settings s;

@@ -95,12 +95,16 @@ TEST_CASE("A scene's quantities arrive in SI units", "[scene]") {
 
 TEST_CASE("Defaults are documented in the resolved scene, which reads back to the same scene", "[scene]") {
   Scene s = parse(base_scene);
-  CHECK(s.scheme == SchemeKind::usl);
+  // The base scene's linear shapes default to MUSL (USL inverts particles entering empty
+  // cells with them, docs/scene.md); GIMP to USL.
+  CHECK(s.scheme == SchemeKind::musl);
+  CHECK(parse(base_scene, {"grid.shape=ugimp"}).scheme == SchemeKind::usl);
+  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == SchemeKind::musl);
   CHECK(s.flip == 0.99);
   CHECK(s.gravity.isZero());
   CHECK(s.snapshot_every == 0);
   CHECK(s.record_tag == "record");
-  CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'usl'") || Catch::Contains("scheme = \"usl\""));
+  CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'musl'") || Catch::Contains("scheme = \"musl\""));
   CHECK_THAT(s.resolved_toml, Catch::Contains("record_tag"));
 
   // The resolved text is a complete scene: read from anywhere it gives the same values.

@@ -1,0 +1,156 @@
+// DDMP, the dual domain material point method (Zhang, Ma & Giguere 2011; Paper A Sec. 2,
+// Eq. 4–8): the original MPM's linear shape functions S_i for mass, momentum and velocity,
+// and a modified gradient for the internal force and the velocity gradient,
+//   ∇̄S_i(x) = α(x) ∇S_i(x) + [1 − α(x)] Σ_j S_j(x)/V_j ∫_Ω S_j ∇S_i dV,            (Eq. 7)
+//   α(x) = ½ {Π_{j=1..n_c} 2 S_j(x)}^{3/(2 (n_c − 1) d)},  n_c = 8, d = 3,             (Eq. 5)
+// j over the 8 corners of the particle's cell, so i reaches one node further per side:
+// a 4×4×4 stencil, nodes c−1 … c+2 for a particle in cell c.
+//
+// Decision (docs/solver.md, "DDMP"): Ω is the union of the grid cells that hold material
+// points of deformable bodies this step, and V_j = ∫_Ω S_j dV = (occupied cells around
+// node j) · h³/8, the node's share of occupied cells. The cell integrals ∫_e S_j ∇S_i dV are
+// geometry only: on a regular grid one 8×8 table for every cell (computed once, below).
+// With V_j consistent with Ω, Σ_i ∫_Ω S_j ∇S_i = ∫_Ω S_j ∇1 = 0 and
+// Σ_i x_i ⊗ ∫_Ω S_j ∇S_i = ∫_Ω S_j I = V_j I, so Eq. 8 — Σ_i ∇̄S_i = 0 and
+// Σ_i x_i ⊗ ∇̄S_i = I — holds exactly at every point, also next to the material boundary,
+// and every node the modified gradient touches is a corner of an occupied cell and so has
+// mass. (Ω = the whole grid with V_j = h³ would push force onto empty nodes outside the
+// material and read their zero velocity back into L: a free surface would not translate
+// rigidly.)
+//
+// The stencil is the tensor-product Stencil<4> of the other shape functions — weights
+// S (zero on the outer nodes) and derivatives α ∇S — plus the non-separable smoothed part
+// (1 − α) Σ_j ..., one vector per stencil node; transfer.hpp adds it where the shape says
+// `smoothed_gradient`.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "mpm/stencil.hpp"
+
+namespace latmpm::mpm {
+
+struct DdmpShape {
+  static constexpr int nodes_per_axis = 4;
+  static constexpr int reach_below = -1;
+  static constexpr int reach_above = 2;
+  static constexpr bool uses_half_size = false;
+  static constexpr bool stretches_with_f = false;
+  static constexpr bool smoothed_gradient = true;
+};
+
+// Shapes without a smoothed gradient part (all others).
+template <class Shape, class = void>
+struct has_smoothed_gradient : std::false_type {};
+template <class Shape>
+struct has_smoothed_gradient<Shape, std::void_t<decltype(Shape::smoothed_gradient)>>
+    : std::bool_constant<Shape::smoothed_gradient> {};
+
+// Bit of the cell c + (dx, dy, dz), d ∈ {−1, 0, 1}, in a 27-bit occupancy mask around c.
+constexpr int ddmp_cell_bit(int dx, int dy, int dz) { return (dx + 1) * 9 + (dy + 1) * 3 + (dz + 1); }
+inline constexpr uint32_t ddmp_all_occupied = (uint32_t(1) << 27) - 1;
+
+struct DdmpStencil : Stencil<4> {
+  Real alpha;          // α(x), Eq. 5
+  Vec3 smoothed[64];   // (1 − α) Σ_j S_j/V_j ∫_Ω S_j ∇S_i dV for node (i, j, k) at [(i·4 + j)·4 + k], 1/m
+};
+
+// α(x) of Eq. 5 from the particle's fractional position f ∈ [0, 1)³ in its cell:
+// Π_j 2 S_j = 2⁸ Π_axes (f (1 − f))⁴ over the 8 corners of the tensor-product cell.
+inline Real ddmp_partition(const Vec3& f) {
+  Real p = 1;
+  for (int a = 0; a < 3; ++a) p *= f[a] * (1 - f[a]);
+  if (!(p > 0)) return 0;
+  constexpr Real exponent = Real(3) / (2 * (8 - 1) * 3);  // 3 / (2 (n_c − 1) d) = 1/14
+  return Real(0.5) * std::pow(Real(256) * p * p * p * p, exponent);
+}
+
+// The stencil at x (m) for cell size 1/inv_h, with `occupied` the 27-bit mask of the cells
+// around x's cell that hold deformable material (ddmp_cell_bit; x's own cell must be set).
+inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied) {
+  DdmpStencil st;
+  occupied |= uint32_t(1) << ddmp_cell_bit(0, 0, 0);
+  int cell[3];
+  Real N[3][2];  // linear weights of the cell's two nodes per axis
+  Vec3 f;
+  for (int a = 0; a < 3; ++a) {
+    const Real xi = x[a] * inv_h;
+    cell[a] = floor_to_int(xi);
+    f[a] = xi - Real(cell[a]);
+    N[a][0] = 1 - f[a];
+    N[a][1] = f[a];
+    st.base[a] = cell[a] - 1;
+  }
+  const Real alpha = ddmp_partition(f);
+  st.alpha = alpha;
+  for (int k = 0; k < 4; ++k) {
+    st.w[k] = Axes{};
+    st.dw[k] = Axes{};
+  }
+  for (int a = 0; a < 3; ++a) {
+    st.w[1][a] = N[a][0];
+    st.w[2][a] = N[a][1];
+    st.dw[1][a] = -alpha * inv_h;  // α ∇S: the derivative factor carries α (the others are S)
+    st.dw[2][a] = alpha * inv_h;
+  }
+  const Real beta = 1 - alpha;
+  if (occupied == ddmp_all_occupied) {
+    // Interior: every node's V_j = h³ and the sum over cells is the whole-grid integral, a
+    // tensor product: ∫ N_j N_i dx = h (2/3, 1/6), ∫ N_j N_i' dx = ±1/2 for i = j ± 1.
+    Real s[3][4], sd[3][4];
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < 4; ++k) {
+        s[a][k] = sd[a][k] = 0;
+        for (int j = 0; j < 2; ++j) {
+          const int offset = k - (j + 1);  // i − j in nodes
+          const Real mass = offset == 0 ? Real(2) / 3 : (offset == 1 || offset == -1 ? Real(1) / 6 : 0);
+          const Real slope = offset == 1 ? Real(0.5) : (offset == -1 ? Real(-0.5) : 0);
+          s[a][k] += N[a][j] * mass;
+          sd[a][k] += N[a][j] * slope * inv_h;
+        }
+      }
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k)
+          st.smoothed[(i * 4 + j) * 4 + k] = beta * Vec3(sd[0][i] * s[1][j] * s[2][k], s[0][i] * sd[1][j] * s[2][k],
+                                                          s[0][i] * s[1][j] * sd[2][k]);
+    return st;
+  }
+  for (auto& g : st.smoothed) g.setZero();
+  auto is_occupied = [&](int dx, int dy, int dz) { return (occupied >> ddmp_cell_bit(dx, dy, dz)) & 1u; };
+  // One cell e, its corners a, b ∈ {0, 1}³: ∫_e S_a ∂_x S_b dV = h² d(a_x, b_x) m(a_y, b_y) m(a_z, b_z)
+  // with d(a, b) = ±1/2 (+ for b = 1) and m(a, b) = 1/3 (a = b) or 1/6.
+  auto cell_m = [](int a, int b) { return a == b ? Real(1) / 3 : Real(1) / 6; };
+  auto cell_d = [](int, int b) { return b == 1 ? Real(0.5) : Real(-0.5); };
+  for (int jx = 0; jx < 2; ++jx)
+    for (int jy = 0; jy < 2; ++jy)
+      for (int jz = 0; jz < 2; ++jz) {
+        const Real S = N[0][jx] * N[1][jy] * N[2][jz];
+        if (!(S > 0)) continue;
+        // Cells around corner j: offsets d = j − 1 + e, e ∈ {0, 1} per axis.
+        int count = 0;
+        for (int ex = 0; ex < 2; ++ex)
+          for (int ey = 0; ey < 2; ++ey)
+            for (int ez = 0; ez < 2; ++ez) count += is_occupied(jx - 1 + ex, jy - 1 + ey, jz - 1 + ez);
+        // V_j = count h³/8; the cell integrals are h² × table: S_j/V_j ∫ ... = S_j 8/(count h) × table.
+        const Real scale = beta * S * 8 / Real(count) * inv_h;
+        for (int ex = 0; ex < 2; ++ex)
+          for (int ey = 0; ey < 2; ++ey)
+            for (int ez = 0; ez < 2; ++ez) {
+              const int dx = jx - 1 + ex, dy = jy - 1 + ey, dz = jz - 1 + ez;
+              if (!is_occupied(dx, dy, dz)) continue;
+              const int lx = jx - dx, ly = jy - dy, lz = jz - dz;  // j's corner in cell d
+              for (int bx = 0; bx < 2; ++bx)
+                for (int by = 0; by < 2; ++by)
+                  for (int bz = 0; bz < 2; ++bz) {
+                    const Real mx = cell_m(lx, bx), my = cell_m(ly, by), mz = cell_m(lz, bz);
+                    const Vec3 g(cell_d(lx, bx) * my * mz, mx * cell_d(ly, by) * mz, mx * my * cell_d(lz, bz));
+                    const int i = dx + bx + 1, j = dy + by + 1, k = dz + bz + 1;
+                    st.smoothed[(i * 4 + j) * 4 + k] += scale * g;
+                  }
+            }
+      }
+  return st;
+}
+
+}  // namespace latmpm::mpm

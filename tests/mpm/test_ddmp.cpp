@@ -1,0 +1,163 @@
+// DDMP's modified gradient (Paper A Eq. 5–8): it satisfies Eq. 8 — Σ_i ∇̄S_i = 0 and
+// Σ_i x_i ⊗ ∇̄S_i = I — at random points for any pattern of occupied cells around the
+// particle (interior, free surfaces, corners, isolated cells); its smoothed part equals Eq. 7
+// evaluated with Gauss quadrature; the partition function α is zero on cell faces and
+// positive inside.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "mpm/shape_ddmp.hpp"
+
+using namespace latmpm::mpm;
+
+namespace {
+struct Sums {
+  Real weight = 0;
+  Vec3 gradient = Vec3::Zero();
+  Mat3 position_gradient = Mat3::Zero();  // Σ x_i ⊗ ∇̄S_i
+  Vec3 position = Vec3::Zero();           // Σ S_i x_i
+};
+
+Vec3 modified_gradient(const DdmpStencil& st, int i, int j, int k) {
+  const Vec3 standard(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
+                      st.w[i][0] * st.w[j][1] * st.dw[k][2]);
+  return standard + st.smoothed[(i * 4 + j) * 4 + k];
+}
+
+Sums sums_of(const DdmpStencil& st, Real h) {
+  Sums s;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k) {
+        const Vec3 xi = h * Vec3(st.base[0] + i, st.base[1] + j, st.base[2] + k);
+        const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+        const Vec3 g = modified_gradient(st, i, j, k);
+        s.weight += w;
+        s.gradient += g;
+        s.position_gradient += xi * g.transpose();
+        s.position += w * xi;
+      }
+  return s;
+}
+
+// Masks: all cells, a free surface on each side, an edge, a corner, the cell alone, random.
+std::vector<uint32_t> masks(std::mt19937& rng) {
+  std::vector<uint32_t> out = {ddmp_all_occupied, uint32_t(1) << ddmp_cell_bit(0, 0, 0)};
+  for (int a = 0; a < 3; ++a)
+    for (int side : {-1, 1}) {
+      uint32_t m = 0;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const int d[3] = {dx, dy, dz};
+            if (d[a] != side) m |= uint32_t(1) << ddmp_cell_bit(dx, dy, dz);
+          }
+      out.push_back(m);
+    }
+  uint32_t corner = 0;
+  for (int dx = -1; dx <= 0; ++dx)
+    for (int dy = -1; dy <= 0; ++dy)
+      for (int dz = -1; dz <= 0; ++dz) corner |= uint32_t(1) << ddmp_cell_bit(dx, dy, dz);
+  out.push_back(corner);
+  std::uniform_int_distribution<uint32_t> bits(0, ddmp_all_occupied);
+  for (int n = 0; n < 20; ++n) out.push_back(bits(rng) | (uint32_t(1) << ddmp_cell_bit(0, 0, 0)));
+  return out;
+}
+}  // namespace
+
+TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to any material boundary", "[mpm][ddmp]") {
+  const Real h = GENERATE(1e-3, 0.64e-3, 1.0);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(-20, 20);
+  std::uniform_int_distribution<int> snap(0, 2);
+  for (const uint32_t mask : masks(rng))
+    for (int n = 0; n < 60; ++n) {
+      Vec3 x(u(rng), u(rng), u(rng));
+      for (int a = 0; a < 3; ++a) {
+        const int mode = snap(rng);
+        if (mode == 1) x[a] = std::round(x[a]);  // on a cell face: α = 0
+        if (mode == 2) x[a] = std::round(x[a]) + 1e-12;
+      }
+      x *= h;
+      const DdmpStencil st = make_ddmp_stencil(x, 1 / h, mask);
+      const Sums s = sums_of(st, h);
+      INFO("x/h = " << (x / h).transpose() << ", mask " << mask << ", h " << h);
+      CHECK(s.weight == Approx(1).margin(1e-13));
+      CHECK(s.gradient.norm() * h < 1e-12);
+      CHECK((s.position_gradient - Mat3::Identity()).norm() < 1e-11);
+      CHECK((s.position - x).norm() / h < 1e-11);
+    }
+}
+
+TEST_CASE("DDMP's smoothed gradient matches Eq. 7 integrated by Gauss quadrature", "[mpm][ddmp]") {
+  // Independent reference: V_j = ∫_Ω S_j dV and ∫_Ω S_j ∇S_i dV by 2-point Gauss quadrature
+  // over the occupied cells (exact: the integrands are quadratic per axis), then Eq. 7.
+  const Real h = 0.64e-3;
+  auto tent = [&](Real x, int node) { return std::max(Real(0), 1 - std::abs(x / h - node)); };
+  auto tent_slope = [&](Real x, int node) {
+    const Real d = x / h - node;
+    return std::abs(d) < 1 ? (d < 0 ? 1 / h : -1 / h) : Real(0);
+  };
+  auto S = [&](const Vec3& x, const int* n) { return tent(x[0], n[0]) * tent(x[1], n[1]) * tent(x[2], n[2]); };
+  auto gradS = [&](const Vec3& x, const int* n) {
+    return Vec3(tent_slope(x[0], n[0]) * tent(x[1], n[1]) * tent(x[2], n[2]),
+                tent(x[0], n[0]) * tent_slope(x[1], n[1]) * tent(x[2], n[2]),
+                tent(x[0], n[0]) * tent(x[1], n[1]) * tent_slope(x[2], n[2]));
+  };
+  const Real g = 0.5 - 0.5 / std::sqrt(3.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(-5, 5);
+  for (const uint32_t mask : masks(rng)) {
+    const Vec3 x = h * Vec3(u(rng), u(rng), u(rng));
+    const DdmpStencil st = make_ddmp_stencil(x, 1 / h, mask);
+    const int c[3] = {st.base[0] + 1, st.base[1] + 1, st.base[2] + 1};
+    // Quadrature points of the occupied cells, weight h³/8 each.
+    std::vector<Vec3> q;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          if (!((mask >> ddmp_cell_bit(dx, dy, dz)) & 1u) && !(dx == 0 && dy == 0 && dz == 0)) continue;
+          for (int a = 0; a < 8; ++a)
+            q.push_back(h * Vec3(c[0] + dx + ((a & 4) ? 1 - g : g), c[1] + dy + ((a & 2) ? 1 - g : g),
+                                 c[2] + dz + ((a & 1) ? 1 - g : g)));
+        }
+    const Real wq = h * h * h / 8;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k) {
+          const int node_i[3] = {st.base[0] + i, st.base[1] + j, st.base[2] + k};
+          Vec3 reference = Vec3::Zero();
+          for (int jx = 0; jx < 2; ++jx)
+            for (int jy = 0; jy < 2; ++jy)
+              for (int jz = 0; jz < 2; ++jz) {
+                const int node_j[3] = {c[0] + jx, c[1] + jy, c[2] + jz};
+                Real volume = 0;
+                Vec3 integral = Vec3::Zero();
+                for (const Vec3& y : q) {
+                  volume += wq * S(y, node_j);
+                  integral += wq * S(y, node_j) * gradS(y, node_i);
+                }
+                reference += S(x, node_j) / volume * integral;
+              }
+          reference *= 1 - st.alpha;
+          INFO("mask " << mask << ", node " << i << j << k);
+          CHECK((st.smoothed[(i * 4 + j) * 4 + k] - reference).norm() * h < 1e-12);
+        }
+  }
+}
+
+TEST_CASE("DDMP's partition function vanishes on cell faces and peaks at the centre", "[mpm][ddmp]") {
+  CHECK(ddmp_partition(Vec3(0, 0.3, 0.7)) == 0);
+  CHECK(ddmp_partition(Vec3(0.2, 1 - 1e-16, 0.5)) < 1e-2);
+  const Real centre = ddmp_partition(Vec3::Constant(0.5));
+  // ½ (2⁸ · (1/4)¹²)^(1/14) = ½ · 2^(−16/14)
+  CHECK(centre == Approx(0.5 * std::pow(2.0, -16.0 / 14.0)).epsilon(1e-14));
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<Real> u(1e-6, 1 - 1e-6);
+  for (int n = 0; n < 1000; ++n) {
+    const Real a = ddmp_partition(Vec3(u(rng), u(rng), u(rng)));
+    CHECK(a > 0);
+    CHECK(a <= centre * (1 + 1e-14));
+  }
+}
