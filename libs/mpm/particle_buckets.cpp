@@ -38,6 +38,16 @@ std::array<int, 3> bucket_of_key(uint64_t key) {
 }
 }  // namespace
 
+void ParticleBuckets::restore(std::vector<Bucket> buckets, std::vector<BodyRun> runs) {
+  buckets_ = std::move(buckets);
+  runs_ = std::move(runs);
+  for (auto& c : colours_) c.clear();
+  for (size_t i = 0; i < buckets_.size(); ++i) {
+    const auto& b = buckets_[i];
+    colours_[(b.coord[0] & 1) * 4 + (b.coord[1] & 1) * 2 + (b.coord[2] & 1)].push_back(uint32_t(i));
+  }
+}
+
 void ParticleBuckets::sort(Particles& particles, Real cell_size) {
   const size_t n = particles.size();
   const Real inv_h = 1 / cell_size;

@@ -42,6 +42,9 @@ class ParticleBuckets {
   // Sorts the particles (all arrays) by (bucket, body, cell) and rebuilds buckets and runs.
   // Ties keep the particles' id order, so the result is the same for any thread count.
   void sort(Particles& particles, Real cell_size);
+  // Takes buckets and runs as saved from an earlier run (checkpoints), the particles being
+  // in the order they had then; boxes are left for the caller. Colours are rebuilt.
+  void restore(std::vector<Bucket> buckets, std::vector<BodyRun> runs);
 
   const std::vector<Bucket>& buckets() const { return buckets_; }
   std::vector<Bucket>& buckets() { return buckets_; }

@@ -25,6 +25,7 @@
 
 namespace latmpm {
 struct PointSet;
+class Hdf5File;
 }
 
 namespace latmpm::mpm {
@@ -97,6 +98,14 @@ class Simulation {
     std::vector<Mat3> velocity_gradient;
   };
   Gathered gather_from_grid() const;
+  // Checkpoints (simulation_state.cpp): everything a continued run needs to give the same
+  // results bit for bit — particles in their internal order with their buckets, time, step,
+  // diagnostics and accumulated work, rigid-body state, the carried stable-step inputs —
+  // into / from the HDF5 group `group` of an open file. load_state needs a Simulation built
+  // from the same scene (same bodies, settings, rigid bodies); throws InputError otherwise.
+  void save_state(Hdf5File& file, const std::string& group) const;
+  void load_state(const Hdf5File& file, const std::string& group);
+
   // Mutable access for tests and set-up (initial velocities); call before the first step.
   // Velocities, positions and stresses set here are taken as the initial state.
   Particles& mutable_particles();

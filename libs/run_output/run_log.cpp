@@ -12,7 +12,8 @@ double now_seconds() {
 }
 }  // namespace
 
-RunLog::RunLog(const std::string& path) : path_(path), out_(path, std::ios::trunc), start_(now_seconds()) {
+RunLog::RunLog(const std::string& path, bool append)
+    : path_(path), out_(path, append ? std::ios::app : std::ios::trunc), start_(now_seconds()) {
   if (!out_) throw InputError(path, "", "cannot write the log file");
 }
 

@@ -9,7 +9,7 @@ namespace latmpm {
 
 class RunLog {
  public:
-  explicit RunLog(const std::string& path);  // creates (truncates) the file
+  explicit RunLog(const std::string& path, bool append = false);  // creates (truncates) the file, or appends
   // "[  12.3s] text": seconds since the log was opened.
   void line(const std::string& text);
   const std::string& path() const { return path_; }

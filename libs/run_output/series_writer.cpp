@@ -1,5 +1,6 @@
 #include "run_output/series_writer.hpp"
 
+#include <cstdlib>
 #include <cstdio>
 #include <stdexcept>
 
@@ -18,6 +19,45 @@ SeriesWriter::SeriesWriter(std::string csv_path, std::string hdf5_path,
   if (!csv_) throw InputError(csv_path_, "", "cannot write the series file");
   for (size_t c = 0; c < columns_.size(); ++c) csv_ << (c ? "," : "") << columns_[c].header();
   csv_ << std::endl;
+}
+
+SeriesWriter::SeriesWriter(std::string csv_path, std::string hdf5_path, std::vector<SeriesColumn> columns,
+                           Provenance provenance, const std::vector<std::vector<double>>& earlier_rows)
+    : SeriesWriter(std::move(csv_path), std::move(hdf5_path), std::move(columns), std::move(provenance)) {
+  for (const auto& row : earlier_rows) append(row);
+}
+
+std::vector<std::vector<double>> read_series_csv(const std::string& path, std::vector<std::string>* header) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot read the series file");
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    size_t start = 0;
+    for (size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+      cells.push_back(text.substr(start, comma - start));
+    cells.push_back(text.substr(start));
+    return cells;
+  };
+  if (!std::getline(in, line)) throw InputError(path, "", "empty series file (no header)");
+  const auto head = split(line);
+  if (header) *header = head;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const auto cells = split(line);
+    if (cells.size() != head.size())
+      throw InputError(path + ":" + std::to_string(number), "", "a row with " + std::to_string(cells.size()) +
+                                                                    " values for " + std::to_string(head.size()) + " columns");
+    std::vector<double> row;
+    for (const auto& c : cells) {
+      char* end = nullptr;
+      row.push_back(std::strtod(c.c_str(), &end));
+      if (end == c.c_str()) throw InputError(path + ":" + std::to_string(number), "", "'" + c + "' is not a number");
+    }
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 void SeriesWriter::append(const std::vector<double>& row) {

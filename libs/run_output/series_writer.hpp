@@ -19,11 +19,19 @@ struct SeriesColumn {
   std::string header() const { return name + "[" + unit + "]"; }
 };
 
+// Reads a series CSV back: its header cells and rows (exact: written with 17 digits).
+// Throws InputError naming the file for a missing file or a malformed row.
+std::vector<std::vector<double>> read_series_csv(const std::string& path, std::vector<std::string>* header);
+
 class SeriesWriter {
  public:
   // Creates (truncates) csv_path now and writes the header line.
   SeriesWriter(std::string csv_path, std::string hdf5_path, std::vector<SeriesColumn> columns,
                Provenance provenance);
+  // The same, starting with rows of an earlier run (a resumed run: they are written again
+  // first, so the CSV holds them and then the new rows).
+  SeriesWriter(std::string csv_path, std::string hdf5_path, std::vector<SeriesColumn> columns,
+               Provenance provenance, const std::vector<std::vector<double>>& earlier_rows);
   const std::vector<SeriesColumn>& columns() const { return columns_; }
   // One value per column; written to the CSV and flushed at once.
   void append(const std::vector<double>& row);

@@ -36,6 +36,24 @@ SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance)
   fs::remove(fs::path(run_dir_) / "failure.xmf", ec);
 }
 
+SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance, std::vector<XdmfFrame> kept)
+    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)), frames_(std::move(kept)) {
+  const fs::path dir = fs::path(run_dir_) / "snapshots";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string(), "", "cannot create the snapshot directory: " + ec.message());
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("snap_", 0) != 0 || entry.path().extension() != ".h5") continue;
+    bool keep = false;
+    for (const auto& f : frames_) keep = keep || fs::path(f.hdf5_file).filename() == entry.path().filename();
+    if (!keep) fs::remove(entry.path());
+  }
+  fs::remove(dir / "failure.h5", ec);
+  fs::remove(fs::path(run_dir_) / "failure.xmf", ec);
+  write_index(frames_, xdmf_path());
+}
+
 void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& path) const {
   const size_t n = s.size();
   OutputFile out(path, path);

@@ -16,6 +16,9 @@ class SnapshotWriter {
  public:
   // Creates RUN_DIR/snapshots/ and removes snap_*.h5 and failure.h5 left by an earlier run.
   SnapshotWriter(std::string run_dir, Provenance provenance);
+  // A resumed run: keeps the snapshots of these frames (an earlier run's, up to its
+  // checkpoint) and removes every other snap_*.h5; new snapshots are added to them.
+  SnapshotWriter(std::string run_dir, Provenance provenance, std::vector<XdmfFrame> kept);
   // Writes the snapshot and returns its path. A second snapshot of the same step replaces
   // the first (e.g. the final state when the last regular snapshot fell on the last step).
   std::string write(const ParticleSnapshot& snapshot);

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/hdf5_file.hpp"
 #include "core/progress.hpp"
 #include "mpm/simulation.hpp"
 #include "points/point_set.hpp"
@@ -78,12 +79,31 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   if (ec || !fs::is_directory(run_dir))
     throw InputError(run_dir, "", "cannot create the run directory" + (ec ? ": " + ec.message() : ""));
 
-  // 1. What is run: the resolved scene and the head of the log.
+  // 1. What is run: the resolved scene and the head of the log. A resumed run first takes
+  //    the state of its checkpoint.
+  mpm::Simulation& sim = *simulation_;
+  const std::string checkpoint_path = run_dir + "/checkpoint.h5";
+  std::vector<XdmfFrame> kept_frames;
+  double wall_before = 0;
+  if (options_.resume) {
+    if (!fs::is_regular_file(checkpoint_path))
+      throw InputError(checkpoint_path, "", "no checkpoint to resume from (the run wrote none)");
+    Hdf5File file(checkpoint_path, Hdf5File::Mode::read);
+    sim.load_state(file, "/state");
+    const auto names = file.read_strings("/output/frame_files");
+    const auto times = file.read_doubles("/output/frame_times");
+    const auto steps = file.read_int64("/output/frame_steps");
+    const auto points = file.read_int64("/output/frame_points");
+    for (size_t i = 0; i < names.size(); ++i) kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i])});
+    wall_before = file.double_attribute("/output", "wall_seconds");
+  }
   write_text_atomically(run_dir + "/scene.toml",
                         "# Resolved scene written by " + provenance_.tool + " " + provenance_.version +
                             "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml);
-  RunLog log(run_dir + "/log.txt");
-  mpm::Simulation& sim = *simulation_;
+  RunLog log(run_dir + "/log.txt", options_.resume);
+  if (options_.resume)
+    log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
+             format("%.9g", sim.time()) + " s (" + format("%.1f", wall_before) + " s of wall time before)");
   const double end = end_time(scene_);
   const Eigen::Vector3d axis = loading_axis(scene_);
   const size_t particles = sim.particles().size();
@@ -109,19 +129,68 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
            format("%g", axis.z()) + "), record area " + format("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
-  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", solver_series_columns(has_flyer(sim)), provenance_);
-  SnapshotWriter snapshots(run_dir, provenance_);
-  series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
-  snapshots.write(solver_snapshot(sim));
+  const auto columns = solver_series_columns(has_flyer(sim));
+  std::vector<std::vector<double>> earlier_rows;
+  if (options_.resume) {
+    // The rows up to the checkpoint that the regular schedule wrote (not a final row of a
+    // run stopped by max_steps): exactly the rows an uninterrupted run has there.
+    std::vector<std::string> header;
+    for (auto& row : read_series_csv(run_dir + "/series.csv", &header)) {
+      const auto step = int64_t(row.at(0));
+      if (step <= sim.step_count() && step % scene_.series_every == 0) earlier_rows.push_back(row);
+    }
+    for (size_t c = 0; c < columns.size(); ++c)
+      if (c >= header.size() || header[c] != columns[c].header())
+        throw InputError(run_dir + "/series.csv", columns[c].header(), "the series does not match the scene's columns");
+  }
+  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", columns, provenance_, earlier_rows);
+  std::unique_ptr<SnapshotWriter> snapshot_writer =
+      options_.resume ? std::make_unique<SnapshotWriter>(run_dir, provenance_, kept_frames)
+                      : std::make_unique<SnapshotWriter>(run_dir, provenance_);
+  SnapshotWriter& snapshots = *snapshot_writer;
+  if (!options_.resume) {
+    series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
+    snapshots.write(solver_snapshot(sim));
+  }
   series.save();
+
+  // Checkpoints: the solver state and what the outputs need to continue.
+  double last_checkpoint = 0;
+  auto save_checkpoint = [&](double wall) {
+    OutputFile out(checkpoint_path, checkpoint_path);
+    {
+      Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
+      write_provenance(file, provenance_);
+      sim.save_state(file, "/state");
+      // Snapshots the regular schedule wrote up to here (a resumed run keeps these).
+      std::vector<std::string> names;
+      std::vector<double> times;
+      std::vector<int64_t> steps, points;
+      for (const auto& f : snapshots.frames())
+        if (f.step == 0 || (scene_.snapshot_every > 0 && f.step % scene_.snapshot_every == 0))
+          names.push_back(f.hdf5_file), times.push_back(f.time), steps.push_back(f.step),
+              points.push_back(int64_t(f.points));
+      file.write_strings("/output/frame_files", names);
+      file.write("/output/frame_times", times, {times.size()});
+      file.write("/output/frame_steps", steps, {steps.size()});
+      file.write("/output/frame_points", points, {points.size()});
+      file.set_attribute("/output", "wall_seconds", wall_before + wall);
+      file.set_attribute("/output", "step", int64_t(sim.step_count()));
+      file.set_attribute("/output", "time", sim.time());
+    }
+    out.commit();
+    last_checkpoint = wall;
+  };
 
   Progress progress(provenance_.tool, end, options_.progress);
   const auto start = std::chrono::steady_clock::now();
   double last_log = 0;
-  int64_t last_row_step = 0, last_snapshot_step = 0;
+  int64_t last_row_step = earlier_rows.empty() ? 0 : int64_t(earlier_rows.back()[0]);
+  int64_t last_snapshot_step = kept_frames.empty() ? 0 : kept_frames.back().step;
+  const int64_t first_step = sim.step_count();  // a resumed run starts later
   auto rate = [&] {
     const double wall = seconds_since(start);
-    return wall > 0 ? double(particles) * double(sim.step_count()) / wall : 0.0;
+    return wall > 0 ? double(particles) * double(sim.step_count() - first_step) / wall : 0.0;
   };
   auto status_text = [&] {
     return "step " + std::to_string(sim.step_count()) + ", t = " + format("%.4g", sim.time()) + " s, " +
@@ -139,6 +208,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     }
     progress.update(d.time, status_text());
     const double wall = seconds_since(start);
+    if ((scene_.checkpoint.every_steps > 0 && d.step % scene_.checkpoint.every_steps == 0) ||
+        (scene_.checkpoint.every_minutes > 0 && wall - last_checkpoint >= 60 * scene_.checkpoint.every_minutes))
+      save_checkpoint(wall);
     if (wall - last_log >= options_.log_interval_s) {
       last_log = wall;
       const double done = d.time / end;
@@ -155,6 +227,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     while (sim.time() < end * (1 - 1e-12)) {
       if (scene_.max_steps > 0 && sim.step_count() >= scene_.max_steps) {
         result.status = "max_steps";
+        save_checkpoint(seconds_since(start));  // so that --resume can continue it
         break;
       }
       if (sim.time() + sim.next_time_step() >= end)

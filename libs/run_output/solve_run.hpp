@@ -7,6 +7,9 @@
 //   log.txt         command, version, settings, progress lines, how the run ended
 //   series.csv/.h5  one row every output.series_every steps (solver_series.hpp)
 //   snapshots/snap_<step>.h5 + snapshots.xmf   particles for ParaView
+//   checkpoint.h5   the whole solver state every checkpoint.every_steps steps / every_minutes
+//                   minutes and when run.max_steps stops the run (atomically replaced);
+//                   SolveOptions::resume continues from it with the same results
 // On NumericalError (Stability): the log says why, the series is saved, the state at the
 // failure is snapshotted, then the error is rethrown (exit status 3).
 #pragma once
@@ -26,6 +29,9 @@ struct SolveOptions {
   int threads = 0;       // solver threads, 0 = all
   bool progress = true;  // progress lines on stderr
   double log_interval_s = 10;  // seconds between progress lines in log.txt
+  // Continue the run in RUN_DIR from RUN_DIR/checkpoint.h5 (latmpm-solve --resume): the
+  // series and snapshots up to the checkpoint are kept and appended to, the log continues.
+  bool resume = false;
 };
 
 struct SolveSummary {

@@ -1,5 +1,6 @@
 // The scene schema: which keys each table holds, their units, defaults and ranges.
 // docs/scene.md is the reference for users; keep the two in step.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -136,6 +137,9 @@ void read_bodies(TableReader bodies, Scene& s) {
     s.bodies.push_back(body);
   }
   bodies.finish();
+  // Bodies in name order, not document order: the resolved scene (RUN_DIR/scene.toml) lists
+  // tables alphabetically, and a resumed run must number the bodies as the first run did.
+  std::stable_sort(s.bodies.begin(), s.bodies.end(), [](const BodySpec& a, const BodySpec& b) { return a.name < b.name; });
 }
 
 void read_rigid_bodies(TableReader rigid, Scene& s) {
@@ -174,6 +178,8 @@ void read_rigid_bodies(TableReader rigid, Scene& s) {
     s.rigid_bodies.push_back(body);
   }
   rigid.finish();
+  std::stable_sort(s.rigid_bodies.begin(), s.rigid_bodies.end(),
+                   [](const RigidBodySpec& a, const RigidBodySpec& b) { return a.name < b.name; });
 }
 
 void read_checkpoint(TableReader checkpoint, Scene& s) {

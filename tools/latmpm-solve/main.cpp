@@ -24,6 +24,12 @@ receives scene.toml (resolved), log.txt, series.csv and series.h5 (time, plate d
 loads on the driven plate, the fixed base and the record layer, energies), and particle
 snapshots (snapshots/*.h5 + snapshots.xmf, open it in ParaView).
 
+Checkpoints: the run saves RUN_DIR/checkpoint.h5 every [checkpoint] every_steps steps or
+every_minutes minutes (default 10 minutes) and when run.max_steps stops it;
+`latmpm-solve --resume RUN_DIR` continues from it with RUN_DIR/scene.toml and appends to the
+series and snapshots, with the same results as a run that never stopped (--set may change
+run.max_steps, run.end, output and checkpoint keys for the rest of the run).
+
 Exit status: 0 done, 1 usage, 2 bad scene or points (FILE:LINE: key: problem; nothing
 written), 3 numerical failure (the log says why; series and snapshots so far are kept).
 
@@ -33,12 +39,15 @@ Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 -o run --quiet
   $ head -3 run/series.csv
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set grid.shape=linear --check
+  $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set run.max_steps=100 -o half --quiet
+  $ latmpm-solve --resume half --set run.max_steps=0 --quiet
 )";
 
 int solve(int argc, char** argv) {
   using namespace latmpm;
   CommandLine cl("latmpm-solve", manual);
-  cl.positional("scene", "the scene file (TOML, docs/scene.md)");
+  cl.positional("scene", "the scene file (TOML, docs/scene.md); not with --resume", false);
+  cl.option("resume", "RUN_DIR", "continue the run in RUN_DIR from its checkpoint.h5 (its scene.toml is the scene)");
   cl.option("output", "RUN_DIR", "directory for the run's files (created if missing, files replaced)");
   cl.alias('o', "output");
   cl.repeated_option("set", "KEY=VALUE", "override a scene key, e.g. --set grid.cell=0.4mm, --set points.0.file=p.h5");
@@ -46,13 +55,18 @@ int solve(int argc, char** argv) {
   cl.flag("quiet", "no progress lines on stderr");
   cl.flag("check", "read and check the scene, its points and the solver set-up, print the resolved scene, run nothing");
   cl.parse(argc, argv);
-  if (!cl.given("output") && !cl.flag_set("check"))
+  const bool resume = cl.given("resume");
+  if (resume && (cl.given("scene") || cl.given("output")))
+    throw UsageError("--resume RUN_DIR takes the scene and the output directory from RUN_DIR: give no scene and no -o");
+  if (!resume && !cl.given("scene")) throw UsageError("missing the scene file (or --resume RUN_DIR)");
+  if (!resume && !cl.given("output") && !cl.flag_set("check"))
     throw UsageError("missing -o RUN_DIR (or --check to only check the scene)");
+  const std::string run_dir = resume ? cl.text("resume") : (cl.given("output") ? cl.text("output") : "");
   const long threads = cl.integer("threads");
   if (threads < 0) throw InputError("--threads", "", "must be 0 (all cores) or positive");
 
   // 1. The scene, with the command line's overrides.
-  Scene scene = read_scene(cl.text("scene"), cl.all("set"));
+  Scene scene = read_scene(resume ? run_dir + "/scene.toml" : cl.text("scene"), cl.all("set"));
 
   // 2. Points and solver: every input error is found here, before anything is written.
   Provenance provenance = Provenance::for_run("latmpm-solve", argc, argv);
@@ -60,6 +74,7 @@ int solve(int argc, char** argv) {
   SolveOptions options;
   options.threads = int(threads);
   options.progress = !cl.flag_set("quiet");
+  options.resume = resume;
   SolveRun run(scene, provenance, options);
   if (cl.flag_set("check")) {
     std::cout << scene.resolved_toml;
@@ -67,10 +82,10 @@ int solve(int argc, char** argv) {
   }
 
   // 3. The run.
-  SolveSummary s = run.run(cl.text("output"));
+  SolveSummary s = run.run(run_dir);
   std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-updates/s, %zu particles -> %s\n",
               cl.tool().c_str(), s.status.c_str(), static_cast<long long>(s.steps), s.simulated_time,
-              s.wall_seconds, s.updates_per_second, s.particles, cl.text("output").c_str());
+              s.wall_seconds, s.updates_per_second, s.particles, run_dir.c_str());
   return exit_ok;
 }
 

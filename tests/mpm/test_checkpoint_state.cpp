@@ -1,0 +1,82 @@
+// Checkpoints of the solver state (Simulation::save_state / load_state): a simulation
+// restored from a saved state continues exactly like the one that saved it.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+
+#include "core/hdf5_file.hpp"
+#include "mpm/simulation.hpp"
+#include "point_builders.hpp"
+
+using namespace latmpm;
+using namespace latmpm::mpm;
+using namespace latmpm::mpm::test;
+
+TEST_CASE("A simulation restored from its saved state continues bit for bit", "[mpm][checkpoint]") {
+  const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::ddmp);
+  const Real h = 1e-3;
+  PointSet points = empty_point_set(h, 2);
+  add_points(points, Eigen::Vector3d(-5 * h, -3 * h, 0), Eigen::Vector3d(6 * h, 4 * h, 10 * h), "block");
+  add_points(points, Eigen::Vector3d(-5 * h, -3 * h, -h), Eigen::Vector3d(6 * h, 4 * h, 0), "base");
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<Real> u(-0.2, 0.2);
+  for (auto& x : points.position) x += h * Eigen::Vector3d(u(rng), u(rng), u(rng));
+  Settings s;
+  s.cell_size = h;
+  s.shape_function = shape;
+  s.scheme = scheme_for(shape);
+  s.gravity = Vec3(0, 0, -9.81);
+  const std::vector<BodySettings> bodies = {deformable("block", elastic(1e6, 0.3, 1000)),
+                                            rigid("base", BodyRole::fixed, Vec3::Zero(), 1000)};
+  RigidBodySettings flyer;
+  flyer.name = "flyer";
+  flyer.box_min = Vec3(-5 * h, -3 * h, 10 * h);
+  flyer.box_max = Vec3(6 * h, 4 * h, 12 * h);
+  flyer.motion = RigidMotion::free;
+  flyer.velocity = Vec3(0, 0, -2);
+  flyer.mass = 0.01;
+  auto make = [&] {
+    auto sim = std::make_unique<Simulation>(points, bodies, s);
+    sim->add_rigid_body(flyer);
+    return sim;
+  };
+  auto state_of = [](const Simulation& sim) {
+    std::vector<Real> v;
+    const Particles& ps = sim.particles();
+    for (size_t p = 0; p < ps.size(); ++p) {
+      v.push_back(ps.id[p]);
+      for (int a = 0; a < 3; ++a) v.push_back(ps.position[p][a]), v.push_back(ps.velocity[p][a]);
+      for (int c = 0; c < 6; ++c) v.push_back(ps.stress[p][c]);
+    }
+    const auto& d = sim.last_diagnostics();
+    v.insert(v.end(), {d.time, d.dt, d.kinetic_energy, d.strain_energy, d.external_work, d.energy_error,
+                       d.reaction[1][2], d.rigid[0].velocity[2], d.rigid[0].displacement[2]});
+    return v;
+  };
+  const auto path = std::filesystem::temp_directory_path() / ("latmpm-state-" + std::to_string(::getpid()) + ".h5");
+  auto first = make();
+  for (int n = 0; n < 30; ++n) first->step();
+  {
+    Hdf5File file(path.string(), Hdf5File::Mode::create);
+    first->save_state(file, "/state");
+  }
+  auto second = make();
+  {
+    Hdf5File file(path.string(), Hdf5File::Mode::read);
+    second->load_state(file, "/state");
+  }
+  std::filesystem::remove(path);
+  REQUIRE(second->step_count() == 30);
+  CHECK(state_of(*second) == state_of(*first));
+  for (int n = 0; n < 30; ++n) first->step(), second->step();
+  const auto a = state_of(*first), b = state_of(*second);
+  REQUIRE(a.size() == b.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
+  INFO("shape " << to_string(shape));
+  CHECK(differing == 0);
+  CHECK(first->last_diagnostics().kinetic_energy > 0);
+}
