@@ -6,8 +6,8 @@
 # which is replaced only when its content changes: a second `make` redoes a run only when its
 # point file, its scene or its overrides changed. RUN/wall_time.txt is the stamp, written by
 # pipelines/common/solve-case.sh only when the solver finished (with the wall and CPU time).
-# The tools are order-only prerequisites: a rebuilt solver does not rerun finished cases
-# (delete run-<case>/ to rerun one).
+# The tools and solve-case.sh are order-only prerequisites: a rebuilt solver does not rerun
+# finished cases (delete run-<case>/ to rerun one).
 ifndef LATMPM_PIPELINES_COMMON
 LATMPM_PIPELINES_COMMON := 1
 
@@ -30,12 +30,13 @@ $(1): pipeline-args-force
 	  if cmp -s $$@.new $$@; then rm -f $$@.new; else mv $$@.new $$@; fi
 endef
 
-# $(call pipeline_run,RUN_DIR,POINTS,SCENE,SET_WORDS): the run RUN_DIR of SCENE with the point
-# file POINTS (points.0.file) and further overrides (words such as --set grid.cell=0.4mm).
+# $(call pipeline_run,RUN_DIR,POINTS,SCENE,SET_WORDS[,ALLOW_FAILURE]): the run RUN_DIR of
+# SCENE with the point file POINTS (points.0.file) and further overrides (words such as
+# --set grid.cell=0.4mm). ALLOW_FAILURE = 1: a numerical failure is recorded, not an error.
 define pipeline_run
 $(call pipeline_args,$(1).args,$(3) --set points.0.file=$(2) $(4))
-$(1)/wall_time.txt: $(1).args $(2) $(3) $(PIPELINE_COMMON)/solve-case.sh | $(BIN)/latmpm-solve
-	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1) $$(SOLVE_THREADS)
+$(1)/wall_time.txt: $(1).args $(2) $(3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh
+	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1) $$(SOLVE_THREADS) $(5)
 endef
 
 # $(call pipeline_post,OUT_DIR,RUNS,POST_ARGS,TITLE,NOTES): latmpm-post over the runs into

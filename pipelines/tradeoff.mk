@@ -32,10 +32,10 @@ to_sets = --set grid.cell=$(call to_field,$(1),2)mm --set grid.shape=$(call to_f
   --set 'bodies.top_plate.velocity=["0mm/s","0mm/s","-$(call to_field,$(1),6)mm/s"]'
 
 $(foreach k,$(TO_COLUMN),$(eval $(call pipeline_run,$(TO_OUT)/column/run-$(call to_field,$k,1),$(call to_points,c,$k),\
-  pipelines/column-buckling/column.toml,$(call to_sets,$k) --set output.series_every=25)))
+  pipelines/column-buckling/column.toml,$(call to_sets,$k) --set output.series_every=25,1)))
 $(foreach k,$(TO_LATTICE),$(eval $(call pipeline_run,$(TO_OUT)/lattice/run-$(call to_field,$k,1),$(call to_points,l,$k),\
   pipelines/lattice-compression/lattice.toml,$(call to_sets,$k) --set run.end.plate_displacement=2mm \
-  --set output.series_every=20 --set bodies.lattice.material.E=10MPa)))
+  --set output.series_every=20 --set bodies.lattice.material.E=10MPa,1)))
 TO_COLUMN_RUNS  := $(foreach k,$(TO_COLUMN),$(TO_OUT)/column/run-$(call to_field,$k,1))
 TO_LATTICE_RUNS := $(foreach k,$(TO_LATTICE),$(TO_OUT)/lattice/run-$(call to_field,$k,1))
 

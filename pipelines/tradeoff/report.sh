@@ -10,20 +10,27 @@ out=$1
 here=$(dirname "$0")
 euler_column=0.4961   # N: pi^2 E I / (K L)^2, E = 10 MPa, t = 1.6 mm, L = 16 mm, K = 0.5
 csv="$out/errors.csv"
-echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se" > "$csv.tmp"
+echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status" > "$csv.tmp"
 while IFS=: read -r family name cell ppc shape ms speed; do
   [ -n "$family" ] || continue
   run="$out/$family/run-$name"
   [ "$name" = ref ] && ref=$run
   cost=$(awk -F= '{ v[$1] = $2 } END { printf "%s,%s,%s,%s", v["points"], v["steps"], v["cpu_s"], v["wall_s"] }' "$run/wall_time.txt")
-  errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
-  echo "$family,$name,$cell,$ppc,$shape,$ms,$speed,$cost,$errors" >> "$csv.tmp"
+  status=$(sed -n 's/^status=//p' "$run/wall_time.txt"); status=${status:-finished}
+  if [ "$status" = failed ]; then
+    # A numerical failure: no errors, the step and the reason in short.
+    errors=",,,,"
+    status="failed at $(sed -n 's/^reason=numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1, \2/p' "$run/wall_time.txt")"
+  else
+    errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
+  fi
+  echo "$family,$name,$cell,$ppc,$shape,$ms,$speed,$cost,$errors,$status" >> "$csv.tmp"
 done < "$out/knobs.txt"
 mv "$csv.tmp" "$csv"
 
 # Pareto plot: CPU time against the curve error, one colour per family; the line joins each
 # family's Pareto front (no cheaper run has a smaller error). The reference (error 0) is left out.
-awk -F, 'NR > 1 && $2 != "ref" { print $1, $10, $12, $2 }' "$csv" | sort -k1,1 -k2,2g > "$out/pareto-points.dat"
+awk -F, 'NR > 1 && $2 != "ref" && $12 != "" { print $1, $10, $12, $2 }' "$csv" | sort -k1,1 -k2,2g > "$out/pareto-points.dat"
 awk '{ if ($1 != fam) { fam = $1; best = 1e300; print "" ; print "" } if ($3 < best) { best = $3; print } }' \
   "$out/pareto-points.dat" | sed '1,2d' > "$out/pareto-front.dat"
 cat > "$out/pareto.gp" <<'GP'
@@ -60,7 +67,10 @@ fi
   echo "| family | run | cell (mm) | ppc | shape | mass scaling | v0 (mm/s) | points | steps | CPU (s) | wall (s) | curve error | peak error | late error | Euler error | KE/SE |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   awk -F, 'NR > 1 {
-    pct = "%+.1f %%"
+    if ($17 != "finished") {
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | **%s** | | | | |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $17
+      next
+    }
     printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f %% | %+.1f %% | %+.1f %% | %s | %.2g |\n",
       $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, 100 * $12, 100 * $13, 100 * $14,
       ($15 == "" ? "–" : sprintf("%+.1f %%", 100 * $15)), $16 }' "$csv"
