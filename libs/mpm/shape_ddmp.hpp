@@ -67,7 +67,9 @@ inline Real ddmp_partition(const Vec3& f) {
 
 // The stencil at x (m) for cell size 1/inv_h, with `occupied` the 27-bit mask of the cells
 // around x's cell that hold deformable material (ddmp_cell_bit; x's own cell must be set).
-inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied) {
+// Without `smoothed` only S and α∇S are filled (passes that need no gradient: the smoothed
+// part is most of the cost).
+inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied, bool smoothed = true) {
   DdmpStencil st;
   occupied |= uint32_t(1) << ddmp_cell_bit(0, 0, 0);
   int cell[3];
@@ -94,6 +96,10 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
     st.dw[2][a] = alpha * inv_h;
   }
   const Real beta = 1 - alpha;
+  if (!smoothed) {
+    for (auto& g : st.smoothed) g.setZero();
+    return st;
+  }
   if (occupied == ddmp_all_occupied) {
     // Interior: every node's V_j = h³ and the sum over cells is the whole-grid integral, a
     // tensor product: ∫ N_j N_i dx = h (2/3, 1/6), ∫ N_j N_i' dx = ±1/2 for i = j ± 1.

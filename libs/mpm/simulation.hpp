@@ -113,6 +113,7 @@ class Simulation {
  private:
   struct Impl;
   void advance(Real dt);
+  void check_body_speed(Real speed, const std::string& where, const std::string& field) const;
   void finish_step(Real dt, Real stable_dt);
   std::unique_ptr<Impl> impl_;
   Particles particles_;

@@ -84,10 +84,11 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
 
 // The stencil of particle p: the shape's tensor-product stencil, or DDMP's with the
 // occupancy of the cells around the particle (from the bucket buffer, cell_occupancy.hpp).
-template <class Shape>
+// Gradient = false: the pass needs weights only (DDMP then skips its smoothed part).
+template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
   if constexpr (has_smoothed_gradient<Shape>::value)
-    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h));
+    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), Gradient);
   else
     return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
 }
@@ -102,7 +103,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
     if (rigid && !Mode::constraint) continue;
     for (uint32_t p = run.begin; p < run.end; ++p) {
-      const auto st = particle_stencil<Shape>(ps, p, h, buffer);
+      const auto st = particle_stencil<Shape, Mode::force>(ps, p, h, buffer);
       Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
       if (rigid) {
         // Rigid points carry no mass to the grid; they mark the nodes they touch.
@@ -302,7 +303,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             Pack v_grid[3] = {}, dv[3] = {}, grad_v[3][3] = {};
             for (int q = 0; q < n; ++q) {
               const uint32_t p = g0 + uint32_t(q);
-              const auto st = particle_stencil<Shape>(ps, p, h, buffer);
+              const auto st = particle_stencil<Shape, gradient>(ps, p, h, buffer);
               const auto [aw, ax, ay, az] = interpolate<gradient>(st, buffer);
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];
