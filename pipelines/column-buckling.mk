@@ -30,7 +30,7 @@ CB_CASES :=
 $(foreach t,2.4 1.6,$(foreach a,0 0.02L,$(foreach v,100 50,$(foreach s,$(PIPELINE_SHAPES),\
   $(eval CB_CASES += $(call cb_case,$t,$a,$v,$s))\
   $(eval $(call pipeline_run,$(CB_OUT)/run-$(call cb_case,$t,$a,$v,$s),$(CB_OUT)/points-t$t-a$a.h5,$(CB_SRC)/column.toml,\
-    --set grid.cell=$(CB_CELL) --set grid.shape=$s --set $(call cb_velocity,$v)))))))
+    --set grid.cell=$(CB_CELL) $(call pipeline_shape_sets,$s) --set $(call cb_velocity,$v)))))))
 CB_RUNS := $(foreach c,$(CB_CASES),$(CB_OUT)/run-$c)
 
 .PHONY: column-buckling column-buckling-results
@@ -86,7 +86,7 @@ cb_study_run   = $(if $(cb_study_main),$(CB_OUT)/run-$(call cb_case,2.4,0.02L,10
 CB_STUDY_RUNS := $(foreach h,$(CB_STUDY_CELLS),$(foreach s,$(PIPELINE_SHAPES),$(call cb_study_label,$h,$s)=$(call cb_study_run,$h,$s)))
 $(foreach h,$(CB_STUDY_CELLS),$(if $(call cb_study_main,$h),,$(eval $(call cb_study_points,$h))$(foreach s,$(PIPELINE_SHAPES),\
   $(eval $(call pipeline_run,$(call cb_study_run,$h,$s),$(CB_STUDY)/points-h$h.h5,$(CB_SRC)/column.toml,\
-    --set grid.cell=$(h)mm --set grid.shape=$s)))))
+    --set grid.cell=$(h)mm $(call pipeline_shape_sets,$s))))))
 $(eval $(call pipeline_post,$(CB_STUDY),$(CB_STUDY_RUNS),--kind column,Buckling column: cell-size study (t = 2.4 mm a = 0.02 L),$(CB_SRC)/cell-study-notes.md))
 
 $(CB_OUT)/summary.md $(CB_STUDY)/summary.md: pipelines/column-buckling.mk

@@ -17,6 +17,16 @@ PIPELINE_COMMON := pipelines/common
 LATMPM_HAVE_DDMP := $(shell grep -q '`ddmp`' docs/scene.md 2>/dev/null && echo 1)
 PIPELINE_SHAPES  := ugimp $(if $(LATMPM_HAVE_DDMP),ddmp)
 
+# Per-shape overrides: DDMP with MUSL (docs/scene.md: MUSL is DDMP's default, the scenes here
+# name USL for paper A's GIMP runs).
+pipeline_shape_sets = --set grid.shape=$(1)$(if $(filter ddmp linear,$(1)), --set grid.scheme=musl)
+
+# The height of the top face of a tetrahedral lattice with plates (docs/geometry.md):
+# 2 T + NZ (L sin(phi) + 2 L / 3), L = 8 mm. $(call pipeline_lattice_top,PRESET,NZ,T_MM) in mm.
+pipeline_lattice_top = $(shell awk 'BEGIN { pi = atan2(0, -1); printf "%.6g", 2 * $(3) + $(2) * (8 * sin($(lastword $(subst P, ,$(1))) * pi / 180) + 16 / 3) }')
+# The --set word that puts the rigid plate's face at Z (mm).
+pipeline_platen_at = 'rigid_bodies.platen.point=["0mm","0mm","$(1)mm"]'
+
 # Solver threads per run: 1 when make runs cases side by side (-jN), else all cores (0).
 SOLVE_THREADS = $(if $(filter -j%,$(MAKEFLAGS)),1,0)
 

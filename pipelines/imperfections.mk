@@ -6,50 +6,53 @@
 # Results in results/imperfections/{paper,quick}/: summary.md, metrics.csv, runs.csv, plots/,
 # curves/, run-<type>[-ddmp]/.
 # Chain: latmpm-lattice --preset T1P40 -> latmpm-voxelize -> latmpm-imperfect --type <X>
-# -> latmpm-solve pipelines/lattice-compression/lattice.toml -> latmpm-post.
+# -> latmpm-solve pipelines/lattice-compression/lattice-platen.toml (a rigid plate driven onto
+# the deformable printed top plate, the base held) -> latmpm-post.
 include pipelines/common.mk
 
-IM_SRC    := pipelines/imperfections
-IM_OUT    := results/imperfections/$(if $(QUICK),quick,paper)
-IM_TYPES  := none A B C D
-IM_AMOUNT := 1.28mm
-IM_CELL   := $(if $(QUICK),1mm,0.64mm)
-IM_CELLS  := $(if $(QUICK),2x2x2,5x5x5)
-IM_PLATES := $(if $(QUICK),2mm,3mm)
-IM_TRAVEL := $(if $(QUICK),4mm,20mm)
-IM_SERIES := $(if $(QUICK),20,50)
-IM_FIT    := $(if $(QUICK),0.3mm:1mm,0.5mm:3mm)
+IP_SRC    := pipelines/imperfections
+IP_OUT    := results/imperfections/$(if $(QUICK),quick,paper)
+IP_TYPES  := none A B C D
+IP_AMOUNT := 1.28mm
+IP_CELL   := $(if $(QUICK),1mm,0.64mm)
+IP_CELLS  := $(if $(QUICK),2x2x2,5x5x5)
+IP_PLATES := $(if $(QUICK),2mm,3mm)
+IP_TRAVEL := $(if $(QUICK),4mm,20mm)
+IP_SERIES := $(if $(QUICK),20,50)
+IP_FIT    := $(if $(QUICK),0.3mm:1mm,0.5mm:3mm)
 
-im_case = $(1)$(if $(filter ddmp,$(2)),-ddmp)
-IM_RUNS :=
-$(foreach x,$(IM_TYPES),$(foreach s,$(PIPELINE_SHAPES),\
-  $(eval IM_RUNS += $(IM_OUT)/run-$(call im_case,$x,$s))\
-  $(eval $(call pipeline_run,$(IM_OUT)/run-$(call im_case,$x,$s),$(IM_OUT)/points-$x.h5,pipelines/lattice-compression/lattice.toml,\
-    --set grid.cell=$(IM_CELL) --set grid.shape=$s --set bodies.lattice.material.E=10MPa \
-    --set run.end.plate_displacement=$(IM_TRAVEL) --set output.series_every=$(IM_SERIES)))))
+ip_case = $(1)$(if $(filter ddmp,$(2)),-ddmp)
+IP_RUNS :=
+$(foreach x,$(IP_TYPES),$(foreach s,$(PIPELINE_SHAPES),\
+  $(eval IP_RUNS += $(IP_OUT)/run-$(call ip_case,$x,$s))\
+  $(eval $(call pipeline_run,$(IP_OUT)/run-$(call ip_case,$x,$s),$(IP_OUT)/points-$x.h5,pipelines/lattice-compression/lattice-platen.toml,\
+    --set grid.cell=$(IP_CELL) $(call pipeline_shape_sets,$s) --set bodies.lattice.material.E=10MPa \
+    --set bodies.top_plate.material.E=10MPa \
+    --set $(call pipeline_platen_at,$(call pipeline_lattice_top,T1P40,$(lastword $(subst x, ,$(IP_CELLS))),$(IP_PLATES:mm=))) \
+    --set run.end.plate_displacement=$(IP_TRAVEL) --set output.series_every=$(IP_SERIES)))))
 
 .PHONY: imperfections imperfections-results
 imperfections:
 	$(MAKE) build
 	$(MAKE) imperfections-results
 
-imperfections-results: $(IM_OUT)/summary.md
+imperfections-results: $(IP_OUT)/summary.md
 	@echo "imperfections: results in $<"
 
-$(IM_OUT)/geometry.h5: | $(BIN)/latmpm-lattice
+$(IP_OUT)/geometry.h5: | $(BIN)/latmpm-lattice
 	@mkdir -p $(@D)
-	$(BIN)/latmpm-lattice --preset T1P40 --cells $(IM_CELLS) --plates $(IM_PLATES) --quiet -o $@
+	$(BIN)/latmpm-lattice --preset T1P40 --cells $(IP_CELLS) --plates $(IP_PLATES) --quiet -o $@
 
-$(IM_OUT)/points-none.h5: $(IM_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
-	$(BIN)/latmpm-voxelize $< --cell $(IM_CELL) --ppc 2 --quiet -o $@
+$(IP_OUT)/points-none.h5: $(IP_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
+	$(BIN)/latmpm-voxelize $< --cell $(IP_CELL) --ppc 2 --quiet -o $@
 
 # Types A-D with the imperfect tool's default bodies (A, C: lattice and top plate; B: all;
 # D: lattice), 1.28 mm the largest displacement of any point (paper A Sec. 5.3).
-$(IM_OUT)/points-%.h5: $(IM_OUT)/points-none.h5 | $(BIN)/latmpm-imperfect
-	$(BIN)/latmpm-imperfect $< --type $* --amount $(IM_AMOUNT) --quiet -o $@
+$(IP_OUT)/points-%.h5: $(IP_OUT)/points-none.h5 | $(BIN)/latmpm-imperfect
+	$(BIN)/latmpm-imperfect $< --type $* --amount $(IP_AMOUNT) --quiet -o $@
 
-$(eval $(call pipeline_post,$(IM_OUT),$(IM_RUNS),--kind compression --fit-range $(IM_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IM_SRC)/notes.md))
+$(eval $(call pipeline_post,$(IP_OUT),$(IP_RUNS),--kind compression --fit-range $(IP_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IP_SRC)/notes.md))
 
-$(IM_OUT)/summary.md: pipelines/imperfections.mk
+$(IP_OUT)/summary.md: pipelines/imperfections.mk
 
-.PRECIOUS: $(IM_OUT)/geometry.h5 $(IM_OUT)/points-%.h5
+.PRECIOUS: $(IP_OUT)/geometry.h5 $(IP_OUT)/points-%.h5
