@@ -1,7 +1,7 @@
-// Which grid cells hold deformable material this step: DDMP's integration domain Ω
-// (shape_ddmp.hpp). One 64-bit mask per active grid block, bit n for the cell whose lowest
-// node is node n of the block; copied per bucket into its buffer, from which each particle
-// reads the 27 cells around its own.
+// Which grid cells are at least half filled with deformable material this step: DDMP's
+// integration domain Ω (shape_ddmp.hpp). The points' initial volumes summed per cell (the
+// cell named by its lowest node, 64 per active grid block), compared with h³/2 when copied
+// per bucket into its buffer, from which each particle reads the 27 cells around its own.
 #pragma once
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -29,42 +29,41 @@ inline int table_index(const Bucket& b, int i, int j, int k) {
 }
 }  // namespace occupancy_detail
 
-// Marks the cells of the deformable particles (`deformable[body]`). The cells' lowest nodes
-// lie in active blocks (every stencil reaches its own cell's nodes). Bits are set with an
-// atomic OR: the result does not depend on the order.
+// Sums the initial volume V0 of the deformable points (`deformable[body]`) per cell, into
+// 64 values per active grid block (the cells' lowest nodes lie in active blocks: every
+// stencil reaches its own cell's nodes). Colour by colour, like the scatter: buckets of one
+// colour never share a cell, and each cell adds its points in a fixed order.
 inline void mark_occupied_cells(const ParticleBuckets& buckets, const std::vector<BlockTable>& tables,
                                 const Particles& ps, const std::vector<bool>& deformable, Real h,
-                                std::vector<uint64_t>& occupancy, size_t block_count) {
-  occupancy.assign(block_count, 0);
+                                std::vector<Real>& cell_volume, size_t block_count) {
+  cell_volume.assign(block_count * SparseGrid::nodes_per_block, 0);
   const Real inv_h = 1 / h;
   const auto& list = buckets.buckets();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t bi = r.begin(); bi < r.end(); ++bi) {
-      const Bucket& b = list[bi];
-      for (uint32_t q = b.run_begin; q < b.run_end; ++q) {
-        const BodyRun& run = buckets.runs()[q];
-        if (!deformable[size_t(run.body)]) continue;
-        uint64_t last_bits = 0;
-        int last_block = -1;
-        for (uint32_t p = run.begin; p < run.end; ++p) {
-          const auto c = cell_of(ps.position[p], inv_h);
-          const int block = tables[bi][size_t(occupancy_detail::table_index(b, c[0], c[1], c[2]))];
-          if (block < 0) continue;
-          const uint64_t bit = uint64_t(1) << occupancy_detail::local_bit(c[0], c[1], c[2]);
-          if (block == last_block && (last_bits & bit)) continue;  // sorted by cell: skip repeats
-          __atomic_fetch_or(&occupancy[size_t(block)], bit, __ATOMIC_RELAXED);
-          last_block = block;
-          last_bits = bit;
+  for (const auto& colour : buckets.colours())
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, colour.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t c = r.begin(); c < r.end(); ++c) {
+        const size_t bi = colour[c];
+        const Bucket& b = list[bi];
+        for (uint32_t q = b.run_begin; q < b.run_end; ++q) {
+          const BodyRun& run = buckets.runs()[q];
+          if (!deformable[size_t(run.body)]) continue;
+          for (uint32_t p = run.begin; p < run.end; ++p) {
+            const auto cell = cell_of(ps.position[p], inv_h);
+            const int block = tables[bi][size_t(occupancy_detail::table_index(b, cell[0], cell[1], cell[2]))];
+            if (block >= 0)
+              cell_volume[size_t(block) * SparseGrid::nodes_per_block +
+                          size_t(occupancy_detail::local_bit(cell[0], cell[1], cell[2]))] += ps.volume0[p];
+          }
         }
       }
-    }
-  });
+    });
 }
 
-// Copies the occupancy of the bucket's buffer cells from the per-block masks.
-inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::vector<uint64_t>& occupancy,
-                           BucketBuffer& buffer) {
+// Marks the bucket's buffer cells that belong to Ω: at least half filled, Σ V0 ≥ h³/2.
+inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::vector<Real>& cell_volume,
+                           Real h, BucketBuffer& buffer) {
   constexpr int w = BucketBuffer::width;
+  const Real half_cell = Real(0.5) * h * h * h;
   buffer.occupied.assign(size_t(w) * w * w, 0);
   for (int i = 0; i < w; ++i)
     for (int j = 0; j < w; ++j)
@@ -73,7 +72,8 @@ inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::
         const int block = table[size_t(occupancy_detail::table_index(b, gi, gj, gk))];
         if (block >= 0)
           buffer.occupied[size_t((i * w + j) * w + k)] =
-              uint8_t((occupancy[size_t(block)] >> occupancy_detail::local_bit(gi, gj, gk)) & 1u);
+              cell_volume[size_t(block) * SparseGrid::nodes_per_block + size_t(occupancy_detail::local_bit(gi, gj, gk))] >=
+              half_cell;
       }
 }
 

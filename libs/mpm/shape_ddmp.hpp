@@ -6,17 +6,20 @@
 // j over the 8 corners of the particle's cell, so i reaches one node further per side:
 // a 4×4×4 stencil, nodes c−1 … c+2 for a particle in cell c.
 //
-// Decision (docs/solver.md, "DDMP"): Ω is the union of the grid cells that hold material
-// points of deformable bodies this step, and V_j = ∫_Ω S_j dV = (occupied cells around
-// node j) · h³/8, the node's share of occupied cells. The cell integrals ∫_e S_j ∇S_i dV are
-// geometry only: on a regular grid one 8×8 table for every cell (computed once, below).
+// Decision (docs/solver.md, "DDMP"): Ω is the union of the grid cells at least half filled
+// with deformable material this step (Σ V0 of their points ≥ h³/2, cell_occupancy.hpp), and
+// V_j = ∫_Ω S_j dV = (Ω cells around node j) · h³/8. The cell integrals ∫_e S_j ∇S_i dV
+// are geometry only: on a regular grid one 8×8 table for every cell (computed once, below).
 // With V_j consistent with Ω, Σ_i ∫_Ω S_j ∇S_i = ∫_Ω S_j ∇1 = 0 and
-// Σ_i x_i ⊗ ∫_Ω S_j ∇S_i = ∫_Ω S_j I = V_j I, so Eq. 8 — Σ_i ∇̄S_i = 0 and
-// Σ_i x_i ⊗ ∇̄S_i = I — holds exactly at every point, also next to the material boundary,
-// and every node the modified gradient touches is a corner of an occupied cell and so has
-// mass. (Ω = the whole grid with V_j = h³ would push force onto empty nodes outside the
-// material and read their zero velocity back into L: a free surface would not translate
-// rigidly.)
+// Σ_i x_i ⊗ ∫_Ω S_j ∇S_i = ∫_Ω S_j I = V_j I. Corners j with V_j = 0 (no Ω cell around
+// them) drop out and the others' S_j are renormalised to sum to one, so Eq. 8 —
+// Σ_i ∇̄S_i = 0 and Σ_i x_i ⊗ ∇̄S_i = I — holds exactly at every point; a point with no Ω
+// cell around any corner takes the plain gradient (α = 1). Every node the smoothed part
+// touches is a corner of a well-filled cell and so has a sizeable mass. (Ω = the whole grid
+// pushes force onto empty nodes and reads their zero velocity back into L; Ω = every cell
+// holding a point gives a cell that one point has just entered a full share of the
+// neighbours' smoothed force on corners that point alone weighs, with a tiny mass: the
+// buckling column at two cells across inverted at step 1613, measured.)
 //
 // The stencil is the tensor-product Stencil<4> of the other shape functions — weights
 // S (zero on the outer nodes) and derivatives α ∇S — plus the non-separable smoothed part
@@ -66,12 +69,11 @@ inline Real ddmp_partition(const Vec3& f) {
 }
 
 // The stencil at x (m) for cell size 1/inv_h, with `occupied` the 27-bit mask of the cells
-// around x's cell that hold deformable material (ddmp_cell_bit; x's own cell must be set).
+// of Ω around x's cell (ddmp_cell_bit).
 // Without `smoothed` only S and α∇S are filled (passes that need no gradient: the smoothed
 // part is most of the cost).
 inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied, bool smoothed = true) {
   DdmpStencil st;
-  occupied |= uint32_t(1) << ddmp_cell_bit(0, 0, 0);
   int cell[3];
   Real N[3][2];  // linear weights of the cell's two nodes per axis
   Vec3 f;
@@ -83,7 +85,21 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
     N[a][1] = f[a];
     st.base[a] = cell[a] - 1;
   }
-  const Real alpha = ddmp_partition(f);
+  // Corners with an Ω cell around them, and the share of S they hold.
+  auto is_occupied = [&](int dx, int dy, int dz) { return (occupied >> ddmp_cell_bit(dx, dy, dz)) & 1u; };
+  int count[2][2][2];
+  Real covered = 0;
+  for (int jx = 0; jx < 2; ++jx)
+    for (int jy = 0; jy < 2; ++jy)
+      for (int jz = 0; jz < 2; ++jz) {
+        int n = 0;
+        for (int ex = 0; ex < 2; ++ex)
+          for (int ey = 0; ey < 2; ++ey)
+            for (int ez = 0; ez < 2; ++ez) n += is_occupied(jx - 1 + ex, jy - 1 + ey, jz - 1 + ez);
+        count[jx][jy][jz] = n;
+        if (n > 0) covered += N[0][jx] * N[1][jy] * N[2][jz];
+      }
+  const Real alpha = covered > 0 ? ddmp_partition(f) : Real(1);
   st.alpha = alpha;
   for (int k = 0; k < 4; ++k) {
     st.w[k] = Axes{};
@@ -123,7 +139,7 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
     return st;
   }
   for (auto& g : st.smoothed) g.setZero();
-  auto is_occupied = [&](int dx, int dy, int dz) { return (occupied >> ddmp_cell_bit(dx, dy, dz)) & 1u; };
+  if (!(covered > 0)) return st;
   // One cell e, its corners a, b ∈ {0, 1}³: ∫_e S_a ∂_x S_b dV = h² d(a_x, b_x) m(a_y, b_y) m(a_z, b_z)
   // with d(a, b) = ±1/2 (+ for b = 1) and m(a, b) = 1/3 (a = b) or 1/6.
   auto cell_m = [](int a, int b) { return a == b ? Real(1) / 3 : Real(1) / 6; };
@@ -131,15 +147,12 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
   for (int jx = 0; jx < 2; ++jx)
     for (int jy = 0; jy < 2; ++jy)
       for (int jz = 0; jz < 2; ++jz) {
-        const Real S = N[0][jx] * N[1][jy] * N[2][jz];
-        if (!(S > 0)) continue;
-        // Cells around corner j: offsets d = j − 1 + e, e ∈ {0, 1} per axis.
-        int count = 0;
-        for (int ex = 0; ex < 2; ++ex)
-          for (int ey = 0; ey < 2; ++ey)
-            for (int ez = 0; ez < 2; ++ez) count += is_occupied(jx - 1 + ex, jy - 1 + ey, jz - 1 + ez);
-        // V_j = count h³/8; the cell integrals are h² × table: S_j/V_j ∫ ... = S_j 8/(count h) × table.
-        const Real scale = beta * S * 8 / Real(count) * inv_h;
+        // S_j renormalised over the corners in Ω's reach; V_j = count h³/8 (cells e around j:
+        // offsets d = j − 1 + e); the cell integrals are h² × table: S_j/V_j ∫ = S_j 8/(count h) × table.
+        const Real S = N[0][jx] * N[1][jy] * N[2][jz] / covered;
+        const int n = count[jx][jy][jz];
+        if (!(S > 0) || n == 0) continue;
+        const Real scale = beta * S * 8 / Real(n) * inv_h;
         for (int ex = 0; ex < 2; ++ex)
           for (int ey = 0; ey < 2; ++ey)
             for (int ez = 0; ez < 2; ++ez) {

@@ -51,7 +51,7 @@ struct Simulation::Impl {
   Real initial_energy = 0;       // J
   std::vector<Vec3> initial_centre;  // per body, m
   Reactions reactions;
-  std::vector<uint64_t> occupancy;  // DDMP: cells holding deformable material (cell_occupancy.hpp)
+  std::vector<Real> occupancy;  // DDMP: deformable volume per cell (cell_occupancy.hpp)
   std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
 
   explicit Impl(Simulation& s, int threads)
@@ -150,7 +150,7 @@ struct Simulation::Impl {
         for (size_t c = r.begin(); c < r.end(); ++c) {
           const Bucket& b = list[colour[c]];
           buffer.attach(b);
-          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, buffer);
+          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, buffer);
           clear_box(b, buffer);
           scatter_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
                                       settings().cell_size, buffer);
@@ -170,7 +170,7 @@ struct Simulation::Impl {
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
-        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, buffer);
+        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, buffer);
         copy_box_from_grid(b, tables[bi], grid, buffer);
         gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
                                    buffer, tallies[bi], &run_tallies[b.run_begin]);
