@@ -48,7 +48,7 @@ PointSet elastic_block(int cells, double h, int ppc) {
 
 int main(int argc, char** argv) {
   int cells = 40, steps = 20, threads = 0;
-  std::vector<std::string> shapes = {"linear", "ugimp", "cpgimp", "bspline2", "bspline3"};
+  std::vector<std::string> shapes = {"linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp"};
   std::string scheme = "usl";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];

@@ -114,6 +114,9 @@ class Simulation {
   struct Impl;
   void advance(Real dt);
   void check_body_speed(Real speed, const std::string& where, const std::string& field) const;
+  void check_bodies_apart() const;
+  std::vector<Vec3> body_lo_, body_hi_, body_pad_;  // point bodies' boxes of points at the start, and
+                                                   // their points' largest half-size, m
   void finish_step(Real dt, Real stable_dt);
   std::unique_ptr<Impl> impl_;
   Particles particles_;
