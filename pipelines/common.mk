@@ -12,10 +12,12 @@ ifndef LATMPM_PIPELINES_COMMON
 LATMPM_PIPELINES_COMMON := 1
 
 PIPELINE_COMMON := pipelines/common
-# DDMP (paper A Eq. 4-7) is in the solver once docs/scene.md lists the shape `ddmp`; until
-# then the pipelines run uGIMP only and their summaries say so.
+# DDMP (paper A Eq. 4-7) is in the solver once docs/scene.md lists the shape `ddmp`. Its runs
+# were measured 15-30x slower than uGIMP (docs/experiments.md), so QUICK=1 leaves them out
+# unless DDMP=1; the paper-resolution default includes them (DDMP=0 leaves them out).
 LATMPM_HAVE_DDMP := $(shell grep -q '`ddmp`' docs/scene.md 2>/dev/null && echo 1)
-PIPELINE_SHAPES  := ugimp $(if $(LATMPM_HAVE_DDMP),ddmp)
+DDMP ?= $(if $(QUICK),0,1)
+PIPELINE_SHAPES  := ugimp $(if $(LATMPM_HAVE_DDMP),$(if $(filter 1,$(DDMP)),ddmp))
 
 # Per-shape overrides: DDMP with MUSL (docs/scene.md: MUSL is DDMP's default, the scenes here
 # name USL for paper A's GIMP runs).

@@ -14,20 +14,24 @@ include pipelines/common.mk
 TO_SRC := pipelines/tradeoff
 TO_OUT := results/tradeoff
 
-# name:cell(mm):ppc:shape:mass scaling:speed(mm/s). The first entry of each family is the
-# reference (the finest run), the second the base case.
-TO_KNOBS = ref:$(1):2:ugimp:6:100 base:$(2):2:ugimp:6:100 \
-  $(foreach h,$(3),h$h:$h:2:ugimp:6:100) \
-  ppc1:$(2):1:ugimp:6:100 ppc3:$(2):3:ugimp:6:100 \
-  $(foreach s,linear cpgimp bspline2 bspline3 $(if $(LATMPM_HAVE_DDMP),ddmp),$s:$(2):2:$s:6:100) \
-  ms1:$(2):2:ugimp:1:100 ms36:$(2):2:ugimp:36:100 \
-  v50:$(2):2:ugimp:6:50 v200:$(2):2:ugimp:6:200 v400:$(2):2:ugimp:6:400
+# name:cell(mm):ppc:shape:mass scaling:speed(mm/s):scheme. The first entry of each family is
+# the reference (the finest run), the second the base case. Linear and DDMP run with MUSL
+# (their default in docs/scene.md); linear-usl shows why.
+TO_KNOBS = ref:$(1):2:ugimp:6:100:usl base:$(2):2:ugimp:6:100:usl \
+  $(foreach h,$(3),h$h:$h:2:ugimp:6:100:usl) \
+  ppc1:$(2):1:ugimp:6:100:usl ppc3:$(2):3:ugimp:6:100:usl \
+  linear-usl:$(2):2:linear:6:100:usl linear:$(2):2:linear:6:100:musl \
+  $(foreach s,cpgimp bspline2 bspline3,$s:$(2):2:$s:6:100:usl) \
+  $(if $(LATMPM_HAVE_DDMP),ddmp:$(2):2:ddmp:6:100:musl) \
+  ms1:$(2):2:ugimp:1:100:usl ms36:$(2):2:ugimp:36:100:usl \
+  v50:$(2):2:ugimp:6:50:usl v200:$(2):2:ugimp:6:200:usl v400:$(2):2:ugimp:6:400:usl
 TO_COLUMN  := $(call TO_KNOBS,0.2,0.4,0.64 0.3)
 TO_LATTICE := $(call TO_KNOBS,0.4,0.64,1 0.8 0.5)
 
 to_field = $(word $(2),$(subst :, ,$(1)))
 to_points = $(TO_OUT)/$(1)points-h$(call to_field,$(2),2)-p$(call to_field,$(2),3).h5
 to_sets = --set grid.cell=$(call to_field,$(1),2)mm --set grid.shape=$(call to_field,$(1),4) \
+  $(if $(filter musl,$(call to_field,$(1),7)),--set grid.scheme=musl) \
   --set time.mass_scaling=$(call to_field,$(1),5) \
   --set 'bodies.top_plate.velocity=["0mm/s","0mm/s","-$(call to_field,$(1),6)mm/s"]'
 

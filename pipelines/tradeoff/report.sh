@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The trade-off table and Pareto plot: for every run of OUT_DIR/knobs.txt (written by
-# pipelines/tradeoff.mk, one FAMILY:NAME:CELL:PPC:SHAPE:MASS_SCALING:SPEED per line, the
+# pipelines/tradeoff.mk, one FAMILY:NAME:CELL:PPC:SHAPE:MASS_SCALING:SPEED:SCHEME per line, the
 # reference run first in each family), its cost (OUT_DIR/FAMILY/run-NAME/wall_time.txt) and
 # its errors against the reference (errors.sh). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
 # pareto.png, pareto.svg (when gnuplot is there) and OUT_DIR/summary.md.
@@ -10,21 +10,25 @@ out=$1
 here=$(dirname "$0")
 euler_column=0.4961   # N: pi^2 E I / (K L)^2, E = 10 MPa, t = 1.6 mm, L = 16 mm, K = 0.5
 csv="$out/errors.csv"
-echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status" > "$csv.tmp"
-while IFS=: read -r family name cell ppc shape ms speed; do
+echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status,curve_change_vs_base" > "$csv.tmp"
+while IFS=: read -r family name cell ppc shape ms speed scheme; do
   [ -n "$family" ] || continue
   run="$out/$family/run-$name"
   [ "$name" = ref ] && ref=$run
+  [ "$name" = ref ] && base="$out/$family/run-base"
   cost=$(awk -F= '{ v[$1] = $2 } END { printf "%s,%s,%s,%s", v["points"], v["steps"], v["cpu_s"], v["wall_s"] }' "$run/wall_time.txt")
   status=$(sed -n 's/^status=//p' "$run/wall_time.txt"); status=${status:-finished}
   if [ "$status" = failed ]; then
     # A numerical failure: no errors, the step and the reason in short.
     errors=",,,,"
-    status="failed at $(sed -n 's/^reason=numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1, \2/p' "$run/wall_time.txt")"
+    change=""
+    status="failed at $(sed -n 's/^reason=numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p' "$run/wall_time.txt")"
   else
     errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
+    # The change against the base case isolates the knob from the base's own error.
+    change=$(bash "$here/errors.sh" "$base" "$run" "$family" 0 | cut -d, -f1)
   fi
-  echo "$family,$name,$cell,$ppc,$shape,$ms,$speed,$cost,$errors,$status" >> "$csv.tmp"
+  echo "$family,$name,$cell,$ppc,$shape${scheme:+ ($scheme)},$ms,$speed,$cost,$errors,$status,$change" >> "$csv.tmp"
 done < "$out/knobs.txt"
 mv "$csv.tmp" "$csv"
 
@@ -41,10 +45,10 @@ set ylabel "load-displacement error against the finest run"
 set key below
 set grid
 set title "Speed against accuracy: one knob at a time (labels: the knob changed)"
-plot "pareto-points.dat" using 2:($1 eq "column" ? $3 : 1/0):4 with labels offset 0,0.7 font ",8" notitle, \
-     "" using 2:($1 eq "column" ? $3 : 1/0) with points pt 7 lc 1 title "column t = 1.6 mm (ref: cell 0.2 mm)", \
-     "" using 2:($1 eq "lattice" ? $3 : 1/0):4 with labels offset 0,0.7 font ",8" notitle, \
-     "" using 2:($1 eq "lattice" ? $3 : 1/0) with points pt 5 lc 2 title "T2P30 2x2x1 (ref: cell 0.4 mm)", \
+plot "pareto-points.dat" using 2:(strcol(1) eq "column" ? $3 : 1/0):(strcol(4)) with labels offset 0,0.7 font ",8" tc lt 1 notitle, \
+     "" using 2:(strcol(1) eq "column" ? $3 : 1/0) with points pt 7 lc 1 title "column t = 1.6 mm (ref: cell 0.2 mm)", \
+     "" using 2:(strcol(1) eq "lattice" ? $3 : 1/0):(strcol(4)) with labels offset 0,-0.7 font ",8" tc lt 2 notitle, \
+     "" using 2:(strcol(1) eq "lattice" ? $3 : 1/0) with points pt 5 lc 2 title "T2P30 2x2x1 (ref: cell 0.4 mm)", \
      "pareto-front.dat" index 0 using 2:3 with lines lc 1 dt 2 title "Pareto front, column", \
      "" index 1 using 2:3 with lines lc 2 dt 2 title "Pareto front, lattice"
 GP
@@ -62,18 +66,19 @@ fi
   echo "pipelines/tradeoff/errors.sh: curve = relative L2 difference of the binned"
   echo "load-displacement curves; peak = peak load; late = post-buckling load (column) or work"
   echo "∫F du (lattice); Euler = column post-buckling load against the Euler load 0.4961 N;"
-  echo "KE/SE = largest kinetic / strain energy over the second half of the travel."
+  echo "KE/SE = largest kinetic / strain energy over the second half of the travel; curve change vs"
+  echo "base = the curve error of the run against the base case (the knob's own effect)."
   echo
-  echo "| family | run | cell (mm) | ppc | shape | mass scaling | v0 (mm/s) | points | steps | CPU (s) | wall (s) | curve error | peak error | late error | Euler error | KE/SE |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| family | run | cell (mm) | ppc | shape | mass scaling | v0 (mm/s) | points | steps | CPU (s) | wall (s) | curve error | peak error | late error | Euler error | KE/SE | curve change vs base |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   awk -F, 'NR > 1 {
     if ($17 != "finished") {
-      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | **%s** | | | | |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $17
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | **%s** | | | | | |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $17
       next
     }
-    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f %% | %+.1f %% | %+.1f %% | %s | %.2g |\n",
+    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f %% | %+.1f %% | %+.1f %% | %s | %.2g | %.1f %% |\n",
       $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, 100 * $12, 100 * $13, 100 * $14,
-      ($15 == "" ? "–" : sprintf("%+.1f %%", 100 * $15)), $16 }' "$csv"
+      ($15 == "" ? "–" : sprintf("%+.1f %%", 100 * $15)), $16, 100 * $18 }' "$csv"
   echo
   echo "![Pareto plot](pareto.png)"
   echo
