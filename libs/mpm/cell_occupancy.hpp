@@ -65,10 +65,12 @@ inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::
   constexpr int w = BucketBuffer::width;
   const Real half_cell = Real(0.5) * h * h * h;
   buffer.occupied.assign(size_t(w) * w * w, 0);
-  for (int i = 0; i < w; ++i)
-    for (int j = 0; j < w; ++j)
-      for (int k = 0; k < w; ++k) {
-        const int gi = buffer.origin[0] + i, gj = buffer.origin[1] + j, gk = buffer.origin[2] + k;
+  // Only the bucket's node box (its particles' cells widened by the stencil's reach, which
+  // holds every cell a particle's 27-cell neighbourhood can name).
+  for (int gi = b.box_lo[0]; gi <= b.box_hi[0]; ++gi)
+    for (int gj = b.box_lo[1]; gj <= b.box_hi[1]; ++gj)
+      for (int gk = b.box_lo[2]; gk <= b.box_hi[2]; ++gk) {
+        const int i = gi - buffer.origin[0], j = gj - buffer.origin[1], k = gk - buffer.origin[2];
         const int block = table[size_t(occupancy_detail::table_index(b, gi, gj, gk))];
         if (block >= 0)
           buffer.occupied[size_t((i * w + j) * w + k)] =
