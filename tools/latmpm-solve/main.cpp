@@ -17,12 +17,14 @@ const char* const manual =
     R"(latmpm-solve: runs a simulation scene with the explicit material point method.
 
 The scene (TOML, docs/scene.md) names the point files (latmpm-voxelize), gives each body a
-role (deformable, fixed, driven at a velocity) and a material, the grid cell, shape
-function, update scheme, time-step rule, end condition and outputs; every dimensional value
-carries its unit ("0.4mm", "10MPa", "-100mm/s"). --set overrides any key. The run directory
-receives scene.toml (resolved), log.txt, series.csv and series.h5 (time, plate displacement,
-loads on the driven plate, the fixed base and the record layer, energies), and particle
-snapshots (snapshots/*.h5 + snapshots.xmf, open it in ParaView).
+role (deformable, fixed, driven at a velocity) and a material, rigid bodies by geometry
+(a driven plate, or a free flyer with a mass: [rigid_bodies]), the grid cell, shape function
+(uGIMP, DDMP, ...), update scheme, time-step rule, end condition and outputs; every
+dimensional value carries its unit ("0.4mm", "10MPa", "-100mm/s"). --set overrides any key.
+The run directory receives scene.toml (resolved), log.txt, series.csv and series.h5 (time,
+plate displacement, loads on the driven plate, the fixed base, the record layer and the
+flyer, flyer speed and energy, energies and the energy balance), particle snapshots
+(snapshots/*.h5 + snapshots.xmf, open it in ParaView) and checkpoint.h5.
 
 Checkpoints: the run saves RUN_DIR/checkpoint.h5 every [checkpoint] every_steps steps or
 every_minutes minutes (default 10 minutes) and when run.max_steps stops it;
