@@ -26,6 +26,7 @@
 // (1 − α) Σ_j ..., one vector per stencil node; transfer.hpp adds it where the shape says
 // `smoothed_gradient`.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -140,10 +141,21 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
   }
   for (auto& g : st.smoothed) g.setZero();
   if (!(covered > 0)) return st;
-  // One cell e, its corners a, b ∈ {0, 1}³: ∫_e S_a ∂_x S_b dV = h² d(a_x, b_x) m(a_y, b_y) m(a_z, b_z)
-  // with d(a, b) = ±1/2 (+ for b = 1) and m(a, b) = 1/3 (a = b) or 1/6.
-  auto cell_m = [](int a, int b) { return a == b ? Real(1) / 3 : Real(1) / 6; };
-  auto cell_d = [](int, int b) { return b == 1 ? Real(0.5) : Real(-0.5); };
+  // One cell e, its corners l, b ∈ {0, 1}³ (index 4 l_x + 2 l_y + l_z):
+  // ∫_e S_l ∇S_b dV = h² (d(l_x, b_x) m(l_y, b_y) m(l_z, b_z), m d m, m m d) with
+  // d(l, b) = ±1/2 (+ for b = 1) and m(l, b) = 1/3 (l = b) or 1/6: one table for every cell.
+  static const auto table = [] {
+    std::array<std::array<Vec3, 8>, 8> t;
+    auto m = [](int l, int b) { return l == b ? Real(1) / 3 : Real(1) / 6; };
+    auto d = [](int, int b) { return b == 1 ? Real(0.5) : Real(-0.5); };
+    for (int l = 0; l < 8; ++l)
+      for (int b = 0; b < 8; ++b) {
+        const int lx = l >> 2, ly = (l >> 1) & 1, lz = l & 1, bx = b >> 2, by = (b >> 1) & 1, bz = b & 1;
+        t[l][b] = Vec3(d(lx, bx) * m(ly, by) * m(lz, bz), m(lx, bx) * d(ly, by) * m(lz, bz),
+                       m(lx, bx) * m(ly, by) * d(lz, bz));
+      }
+    return t;
+  }();
   for (int jx = 0; jx < 2; ++jx)
     for (int jy = 0; jy < 2; ++jy)
       for (int jz = 0; jz < 2; ++jz) {
@@ -158,15 +170,10 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
             for (int ez = 0; ez < 2; ++ez) {
               const int dx = jx - 1 + ex, dy = jy - 1 + ey, dz = jz - 1 + ez;
               if (!is_occupied(dx, dy, dz)) continue;
-              const int lx = jx - dx, ly = jy - dy, lz = jz - dz;  // j's corner in cell d
-              for (int bx = 0; bx < 2; ++bx)
-                for (int by = 0; by < 2; ++by)
-                  for (int bz = 0; bz < 2; ++bz) {
-                    const Real mx = cell_m(lx, bx), my = cell_m(ly, by), mz = cell_m(lz, bz);
-                    const Vec3 g(cell_d(lx, bx) * my * mz, mx * cell_d(ly, by) * mz, mx * my * cell_d(lz, bz));
-                    const int i = dx + bx + 1, j = dy + by + 1, k = dz + bz + 1;
-                    st.smoothed[(i * 4 + j) * 4 + k] += scale * g;
-                  }
+              // j is corner l = 1 − e of cell d; the cell's corner b is stencil node d + b + 1.
+              const auto& row = table[size_t(4 * (1 - ex) + 2 * (1 - ey) + (1 - ez))];
+              Vec3* first = st.smoothed + ((dx + 1) * 4 + (dy + 1)) * 4 + (dz + 1);
+              for (int b = 0; b < 8; ++b) first[((b >> 2) * 4 + ((b >> 1) & 1)) * 4 + (b & 1)] += scale * row[size_t(b)];
             }
       }
   return st;
