@@ -51,7 +51,7 @@ $(IP_OUT)/points-none.h5: $(IP_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
 $(IP_OUT)/points-%.h5: $(IP_OUT)/points-none.h5 | $(BIN)/latmpm-imperfect
 	$(BIN)/latmpm-imperfect $< --type $* --amount $(IP_AMOUNT) --quiet -o $@
 
-$(eval $(call pipeline_post,$(IP_OUT),$(IP_RUNS),--kind compression --fit-range $(IP_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IP_SRC)/notes.md))
+$(eval $(call pipeline_post,$(IP_OUT),$(IP_RUNS),--kind compression --load load_fixed --fit-range $(IP_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IP_SRC)/notes.md))
 
 $(IP_OUT)/summary.md: pipelines/imperfections.mk
 

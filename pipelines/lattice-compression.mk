@@ -49,7 +49,7 @@ $(LC_OUT)/geometry-%.h5: | $(BIN)/latmpm-lattice
 $(LC_OUT)/points-%.h5: $(LC_OUT)/geometry-%.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(LC_CELL) --ppc 2 --quiet -o $@
 
-$(eval $(call pipeline_post,$(LC_OUT),$(LC_RUNS),--kind compression --fit-range $(LC_FIT),Lattice compression (paper A Sec. 5.2),$(LC_SRC)/notes.md))
+$(eval $(call pipeline_post,$(LC_OUT),$(LC_RUNS),--kind compression --load load_fixed --fit-range $(LC_FIT),Lattice compression (paper A Sec. 5.2),$(LC_SRC)/notes.md))
 
 $(LC_OUT)/summary.md: pipelines/lattice-compression.mk
 
