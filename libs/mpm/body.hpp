@@ -26,6 +26,16 @@ struct BodySettings {
   // driven) only use `density` for their reported mass.
   MaterialParameters material;
   Vec3 velocity = Vec3::Zero();  // m/s, the prescribed velocity of a driven body
+  // Deformable bodies only: the body's points carrying this point-set tag are held (Paper A
+  // Sec. 5.1, "fixed at the bottom"): every grid node their stencils reach gets zero
+  // velocity, like a fixed body's nodes, and the force that takes is this body's reaction.
+  // The held points stay deformable, so a record layer among them still measures stress.
+  // Empty: nothing held.
+  std::string hold_tag;
+  // false: the held nodes are clamped (zero velocity, the paper's "fixed"). true: they only
+  // lose the velocity component normal to the held face (a roller support), so the held
+  // face may expand sideways and the record layer at it is not stiffened by the clamp.
+  bool hold_slip = false;
 };
 
 }  // namespace latmpm::mpm

@@ -22,8 +22,9 @@ struct StepDiagnostics {
   // Reaction: for fixed and driven bodies the force their constraint applies to the rest of
   // the model, Σ over their constrained nodes of  (m_i v_prescribed − m_i v_i − dt f_i)/dt,
   // f_i the nodal internal + gravity force (N). A plate compressing a specimen downwards
-  // has a negative z reaction; the load the specimen carries is its negation. Zero for
-  // deformable bodies.
+  // has a negative z reaction; the load the specimen carries is its negation. For a
+  // deformable body, the same sum over the nodes its held points reach (BodySettings::
+  // hold_tag); zero when it holds none.
   std::vector<Vec3> reaction;
 
   // Record-layer force A · σ̄_zz (N, tension positive; see Settings::record_tag).

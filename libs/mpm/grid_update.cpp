@@ -36,7 +36,14 @@ Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
       const Vec3 v_old = p / m;
       Vec3 v_new;
       const int body = constrained_body(node);
-      if (body >= 0) {
+      if (body >= 0 && bodies[size_t(body)].hold_slip) {
+        // Roller: the free update without its component along the held face's normal.
+        const Vec3& n = bodies[size_t(body)].hold_outward;
+        v_new = v_old + dt / m * f;
+        v_new -= v_new.dot(n) * n;
+        const Vec3 r = (m * v_new - p) * inv_dt - f;
+        block_force[b * nb + size_t(body)] += r;
+      } else if (body >= 0) {
         v_new = bodies[size_t(body)].velocity;
         const Vec3 r = (m * v_new - p) * inv_dt - f;
         block_force[b * nb + size_t(body)] += r;
@@ -65,10 +72,17 @@ void grid_velocity_from_momentum(SparseGrid& grid, int from, int to, const std::
       Real* node = block + n * lane::count;
       const Real m = node[lane::mass];
       const int body = constrained_body(node);
-      for (int c = 0; c < 3; ++c) {
-        const Real v = body >= 0 ? bodies[size_t(body)].velocity[c] : (m > 0 ? node[from + c] / m : Real(0));
-        node[to + c] = v;
+      Vec3 v = Vec3::Zero();
+      if (body >= 0 && bodies[size_t(body)].hold_slip) {
+        const Vec3& n = bodies[size_t(body)].hold_outward;
+        if (m > 0) v = Vec3(node[from], node[from + 1], node[from + 2]) / m;
+        v -= v.dot(n) * n;
+      } else if (body >= 0) {
+        v = bodies[size_t(body)].velocity;
+      } else if (m > 0) {
+        v = Vec3(node[from], node[from + 1], node[from + 2]) / m;
       }
+      for (int c = 0; c < 3; ++c) node[to + c] = v[c];
     }
   });
 }

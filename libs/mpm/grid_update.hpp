@@ -18,7 +18,9 @@ struct Reactions {
 
 // Explicit update of every node (Paper B Eq. 5): v_old = p/m, f = f_int + m g,
 // v_new = v_old + dt f/m — or, on a node touched by a fixed or driven body, the prescribed
-// velocity, with the reaction r = (m v_prescribed − p)/dt − f that enforcing it takes.
+// velocity, with the reaction r = (m v_prescribed − p)/dt − f that enforcing it takes; on a
+// node of a slipping held face (BodyInfo::hold_slip), the free update less its component
+// along the face normal, with the reaction computed the same way.
 // Before: lanes m, p, f, constraint. After: m, v_new, v_new − v_old, constraint.
 Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
                                  const std::vector<BodyInfo>& bodies);

@@ -23,6 +23,7 @@ struct Particles {
   std::vector<uint8_t> flags;        // bit flags below
 
   static constexpr uint8_t record_flag = 1;  // carries the record tag
+  static constexpr uint8_t held_flag = 2;    // deformable point whose stencil nodes are held at rest
 
   size_t size() const { return position.size(); }
   Real jacobian(size_t p) const { return deformation[p].determinant(); }

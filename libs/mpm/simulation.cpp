@@ -30,6 +30,20 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     const BodySettings& b = *it->second;
     if (b.role == BodyRole::deformable) validate(b.material, where, "bodies." + name + ".material");
     if (!b.velocity.allFinite()) throw InputError(where, "bodies." + name + ".velocity", "must be finite");
+    if (b.hold_slip && b.hold_tag.empty())
+      throw InputError(where, "bodies." + name + ".hold.slip", "needs a hold tag");
+    if (!b.hold_tag.empty()) {
+      const std::string field = "bodies." + name + ".hold.tag";
+      if (b.role != BodyRole::deformable)
+        throw InputError(where, field, "only deformable bodies hold tagged points (a " + to_string(b.role) +
+                                           " body is constrained as a whole)");
+      const auto tag = points.tags.find(b.hold_tag);
+      const int index = points.body_index(name);
+      bool any = false;
+      if (tag != points.tags.end())
+        for (size_t p = 0; p < points.size() && !any; ++p) any = points.body[p] == index && tag->second[p];
+      if (!any) throw InputError(where, field, "no point of body '" + name + "' carries the tag '" + b.hold_tag + "'");
+    }
     bodies_.push_back(b);
   }
   impl_ = std::make_unique<Impl>(*this, settings_.threads);
@@ -37,6 +51,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     BodyInfo info;
     info.role = b.role;
     info.velocity = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
+    info.hold_slip = b.hold_slip;
     if (b.role == BodyRole::deformable) info.model = make_material_model(b.material, settings_.mass_scaling);
     impl_->body_info.push_back(info);
   }
@@ -61,11 +76,31 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     particles_.half_size0[p] = half;
     particles_.body[p] = points.body[p];
     particles_.id[p] = uint32_t(p);
+    if (!b.hold_tag.empty() && points.tags.at(b.hold_tag)[p]) particles_.flags[p] |= Particles::held_flag;
     if (record != points.tags.end() && record->second[p]) {
       particles_.flags[p] |= Particles::record_flag;
       record_volume += points.volume[p];
       z_min = std::min(z_min, points.position[p][2]);
       z_max = std::max(z_max, points.position[p][2]);
+    }
+  }
+  // Held faces' outward directions: from each body's centroid toward its held points'.
+  {
+    std::vector<Vec3> all(bodies_.size(), Vec3::Zero()), held(bodies_.size(), Vec3::Zero());
+    std::vector<Real> all_volume(bodies_.size(), 0), held_volume(bodies_.size(), 0);
+    for (size_t p = 0; p < n; ++p) {
+      const size_t b = size_t(points.body[p]);
+      all[b] += points.volume[p] * points.position[p];
+      all_volume[b] += points.volume[p];
+      if (particles_.flags[p] & Particles::held_flag) held[b] += points.volume[p] * points.position[p], held_volume[b] += points.volume[p];
+    }
+    for (size_t b = 0; b < bodies_.size(); ++b) {
+      if (!(held_volume[b] > 0)) continue;
+      const Vec3 d = held[b] / held_volume[b] - all[b] / all_volume[b];
+      if (d.norm() > 1e-9 * settings_.cell_size) impl_->body_info[b].hold_outward = d.normalized();
+      else if (bodies_[b].hold_slip)
+        throw InputError(where, "bodies." + bodies_[b].name + ".hold.slip",
+                         "the held points have no face direction (their centroid is the body's); clamp them instead");
     }
   }
   if (record_volume > 0) {
@@ -261,7 +296,7 @@ void Simulation::finish_step(Real dt, Real stable) {
     switch (bodies_[b].role) {
       case BodyRole::deformable:
         d.body_displacement[b] = im.centre_of_mass(b) - im.initial_centre[b];
-        d.reaction[b].setZero();
+        d.reaction[b] = im.reactions.force[b];  // of its held points' nodes; zero when none
         break;
       case BodyRole::fixed:
         d.reaction[b] = im.reactions.force[b];

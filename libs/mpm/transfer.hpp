@@ -27,6 +27,10 @@ struct BodyInfo {
   BodyRole role = BodyRole::deformable;
   Vec3 velocity = Vec3::Zero();  // prescribed velocity of a driven body, m/s
   MaterialModel model;
+  // Deformable body with held points: unit vector from the body's centroid toward its held
+  // points' centroid (the held face's outward normal), zero when that is undefined.
+  Vec3 hold_outward = Vec3::Zero();
+  bool hold_slip = false;  // held nodes keep their velocity along the face (BodySettings::hold_slip)
 };
 
 // Which node lanes a particles-to-grid pass fills.
@@ -105,18 +109,31 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
     for (uint32_t p = run.begin; p < run.end; ++p) {
       const auto st = particle_stencil<Shape, Mode::force>(ps, p, h, buffer);
       Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-      if (rigid) {
-        // Rigid points carry no mass to the grid; they mark the nodes they touch.
+      // Rigid points mark every node they touch with their body: those nodes take the body's
+      // prescribed velocity (zero unless driven). Held points of a deformable body mark the
+      // touched nodes except those lying inward (against hold_outward) by more than half
+      // the point's half-size: the nodes on and beyond the body's held face. Holding every
+      // node they touch would freeze the whole cell band they sit in, held points included,
+      // and a record layer among them would read zero stress; holding only the nodes near
+      // them would leave the tiny-mass node just outside free, whose huge velocity cancels
+      // the held points' strain (docs/solver.md, "Held points").
+      const bool held = !rigid && (ps.flags[p] & Particles::held_flag);
+      if (Mode::constraint && (rigid || held)) {
         const Real marker = Real(run.body + 1);
+        const Vec3& n = bodies[run.body].hold_outward;
+        const Real inward_limit = -Real(0.5) * n.cwiseAbs().dot(ps.half_size0[p]);
+        Real along[3][N];  // (x_node − x_p)·n, per axis part
+        for (int a = 0; a < 3; ++a)
+          for (int i = 0; i < N; ++i) along[a][i] = held ? ((st.base[a] + i) * h - ps.position[p][a]) * n[a] : Real(0);
         for (int i = 0; i < N; ++i)
           for (int j = 0; j < N; ++j)
             for (int k = 0; k < N; ++k)
-              if (st.w[i][0] * st.w[j][1] * st.w[k][2] > 0) {
+              if (st.w[i][0] * st.w[j][1] * st.w[k][2] > 0 && along[0][i] + along[1][j] + along[2][k] >= inward_limit) {
                 Real& c = first[i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L + lane::constraint];
                 c = std::max(c, marker);
               }
-        continue;
       }
+      if (rigid) continue;  // rigid points carry no mass to the grid
       // Lane vectors: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz.
       NodeLanes a{}, fx{}, fy{}, fz{};
       const Real m = ps.mass[p];

@@ -41,6 +41,8 @@ std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
     s.material.poisson_ratio = m->poisson_ratio;
     s.material.density = m->density;
     s.velocity = b.velocity;
+    s.hold_tag = b.hold_tag;
+    s.hold_slip = b.hold_slip;
     bodies.push_back(s);
   }
   return bodies;

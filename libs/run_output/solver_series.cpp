@@ -9,7 +9,7 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"dt", "s", "time step of the step"},
       {"displacement", "m", "driven body's travel along the loading axis"},
       {"load_driven", "N", "reaction on the driven bodies along the loading axis, compression positive"},
-      {"load_fixed", "N", "reaction on the fixed bodies against the loading axis, compression positive"},
+      {"load_fixed", "N", "reaction on the fixed bodies and held points against the loading axis, compression positive"},
       {"load_record", "N", "record layer: -(mean vertical stress) x area (Paper A Sec. 5.1), compression positive"},
       {"kinetic_energy", "J", "1/2 sum m v^2 over deformable points"},
       {"strain_energy", "J", "sum V0 psi over deformable points"},
@@ -52,7 +52,7 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
       if (!displacement_taken && b < d.body_displacement.size())
         displacement = Eigen::Vector3d(d.body_displacement[b]).dot(axis);
       displacement_taken = true;
-    } else if (bodies[b].role == mpm::BodyRole::fixed) {
+    } else if (bodies[b].role == mpm::BodyRole::fixed || !bodies[b].hold_tag.empty()) {
       load_fixed = load_fixed - reaction.dot(axis);
     }
   }

@@ -54,6 +54,11 @@ struct BodySpec {
   bool has_material = false;  // deformable bodies always; fixed/driven optionally (mass only)
   MaterialSpec material;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, driven bodies
+  // Deformable bodies: `hold = { tag = "record" }` holds the body's points with this point
+  // tag at rest (zero velocity on the grid nodes they reach). Empty: none held.
+  std::string hold_tag;
+  bool hold_slip = false;  // hold.slip: only the velocity normal to the held face is zero
+  std::string hold_where;  // location of the hold.tag key
   std::string where;  // "scene.toml:14", for messages about this body
 };
 

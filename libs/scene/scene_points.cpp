@@ -74,6 +74,22 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       throw InputError(scene.bodies[b].where, "bodies." + scene.bodies[b].name,
                        "no point file holds a body named '" + scene.bodies[b].name +
                            "' (the files hold: " + list(names_in_files) + ")");
+  // A held layer must exist: a misspelt tag would otherwise leave the body free.
+  for (size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodySpec& body = scene.bodies[b];
+    if (body.hold_tag.empty()) continue;
+    const auto tag = all.tags.find(body.hold_tag);
+    bool any = false;
+    if (tag != all.tags.end())
+      for (size_t p = 0; p < all.size() && !any; ++p) any = all.body[p] == int32_t(b) && tag->second[p];
+    if (!any) {
+      std::vector<std::string> tags;  // std::map: in name order
+      for (const auto& [name, mask] : all.tags) tags.push_back(name);
+      throw InputError(body.hold_where, "bodies." + body.name + ".hold.tag",
+                       "no point of body '" + body.name + "' carries the tag '" + body.hold_tag +
+                           "' (the point files' tags: " + (tags.empty() ? std::string("none") : list(tags)) + ")");
+    }
+  }
   return all;
 }
 

@@ -133,6 +133,16 @@ void read_bodies(TableReader bodies, Scene& s) {
       b.fail("velocity", std::string("only driven bodies take a velocity (this one is ") +
                              to_string(body.role) + ")");
     }
+    if (auto hold = b.optional_table("hold")) {
+      body.hold_where = hold->where("tag");
+      body.hold_tag = hold->text("tag");
+      if (body.role != BodyRole::deformable)
+        hold->fail("tag", std::string("only deformable bodies hold tagged points (this one is ") +
+                              to_string(body.role) + ", constrained as a whole)");
+      if (body.hold_tag.empty()) hold->fail("tag", "must name a point tag");
+      body.hold_slip = hold->boolean("slip", false);
+      hold->finish();
+    }
     b.finish();
     s.bodies.push_back(body);
   }

@@ -147,6 +147,11 @@ TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
        "scene.toml:2", "run.end.plate_displacement", "exactly one driven"},
       {8, "mass_scaling = [6]", "scene.toml:8", "time.mass_scaling", "found an array"},
       {16, "velocity = [\"0mm/s\", \"0mm/s\" \"-1m/s\"]", "scene.toml:16", "", "not valid TOML"},
+      {16, "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\nhold = { tag = \"record\" }", "scene.toml:17",
+       "bodies.top.hold.tag", "only deformable bodies"},
+      {12, "role = \"deformable\"\nhold = { tag = \"\" }", "scene.toml:13", "bodies.column.hold.tag", "must name"},
+      {12, "role = \"deformable\"\nhold = { tags = \"record\" }", "scene.toml:13", "bodies.column.hold.tags",
+       "unknown key"},
   }));
   CAPTURE(c.replacement);
   try {
@@ -157,6 +162,22 @@ TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
     CHECK(e.field() == c.key);
     CHECK_THAT(e.problem(), Catch::Contains(c.problem));
   }
+}
+
+TEST_CASE("A held layer is read with its tag and support, clamped unless it slips", "[scene]") {
+  const bool slip = GENERATE(false, true);
+  const std::string hold = slip ? "hold = { tag = \"record\", slip = true }" : "hold = { tag = \"record\" }";
+  Scene s = parse(with_line(12, "role = \"deformable\"\n" + hold));
+  const BodySpec* column = s.body("column");
+  REQUIRE(column);
+  CHECK(column->hold_tag == "record");
+  CHECK(column->hold_slip == slip);
+  CHECK(column->hold_where == "scene.toml:13");
+  // The resolved scene keeps it, the default filled in.
+  const Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
+  CHECK(again.body("column")->hold_tag == "record");
+  CHECK(again.body("column")->hold_slip == slip);
+  CHECK(parse(base_scene).body("column")->hold_tag.empty());
 }
 
 TEST_CASE("Command-line overrides reach any field, the value read as TOML or else as text", "[scene]") {

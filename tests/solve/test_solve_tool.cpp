@@ -175,6 +175,8 @@ TEST_CASE("Bad scenes exit with status 2 naming the line and key, writing nothin
       {"[bodies.top_plate]", "[bodies.top_plates]", "bad.toml:10: points.0.file"},
       {"snapshot_every", "snapshot_evry", "bad.toml:21: output.snapshot_evry"},
       {"role = \"fixed\"", "role = \"clamped\"", "bad.toml:15: bodies.bottom_plate.role"},
+      // A held layer whose tag no point of the body carries (the column's is "record").
+      {"\"1050kg/m^3\" }", "\"1050kg/m^3\" }\nhold = { tag = \"recrod\" }", "bad.toml:14: bodies.column.hold.tag"},
   }));
   std::string text = tiny_scene;
   text.replace(text.find(from), from.size(), to);
