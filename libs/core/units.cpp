@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -152,6 +153,12 @@ std::string trim(const std::string& s) {
 }
 
 }  // namespace
+
+std::string format_millimetres(double metres, int significant_digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g mm", significant_digits, metres * 1e3);
+  return text;
+}
 
 std::string describe(const Dimension& d) {
   struct Named {

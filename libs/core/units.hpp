@@ -49,6 +49,9 @@ struct Quantity {
   Dimension dimension;
 };
 
+// A length for messages and summaries: "1.28 mm", with `significant_digits` digits (%g).
+std::string format_millimetres(double metres, int significant_digits);
+
 // Parses "<number>[ ]<unit>". Throws InputError(where, field, problem) on any error,
 // where/field name the file or option so the message points at the input.
 Quantity parse_quantity(const std::string& text, const std::string& where = "",

@@ -1,3 +1,4 @@
+#include "core/units.hpp"
 #include "imperfect/shape_perturbation.hpp"
 
 #include <algorithm>
@@ -12,12 +13,7 @@
 namespace latmpm {
 namespace {
 
-std::string mm(double metres) {
-  std::ostringstream os;
-  os.precision(6);
-  os << metres * 1e3 << " mm";
-  return os.str();
-}
+std::string mm(double metres) { return format_millimetres(metres, 6); }
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;

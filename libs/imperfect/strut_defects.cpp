@@ -1,3 +1,4 @@
+#include "core/units.hpp"
 #include "imperfect/strut_defects.hpp"
 
 #include <Eigen/Geometry>
@@ -21,12 +22,7 @@ std::string percent(double fraction) {
   return os.str();
 }
 
-std::string mm(double metres) {
-  std::ostringstream os;
-  os.precision(5);
-  os << metres * 1e3 << " mm";
-  return os.str();
-}
+std::string mm(double metres) { return format_millimetres(metres, 5); }
 
 std::string point_mm(const Eigen::Vector3d& x) {
   std::ostringstream os;

@@ -13,4 +13,11 @@ struct TriangleMesh {
   std::vector<std::array<int32_t, 3>> triangles;
 };
 
+// Adds `from`'s triangles (and vertices) to `to`, as separate shells.
+inline void append(TriangleMesh& to, const TriangleMesh& from) {
+  const auto offset = static_cast<int32_t>(to.vertices.size());
+  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+  for (auto t : from.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+}
+
 }  // namespace latmpm

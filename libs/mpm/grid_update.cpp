@@ -38,9 +38,9 @@ Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
       const int body = constrained_body(node);
       if (body >= 0 && bodies[size_t(body)].hold_slip) {
         // Roller: the free update without its component along the held face's normal.
-        const Vec3& n = bodies[size_t(body)].hold_outward;
+        const Vec3& normal = bodies[size_t(body)].hold_outward;
         v_new = v_old + dt / m * f;
-        v_new -= v_new.dot(n) * n;
+        v_new -= v_new.dot(normal) * normal;
         const Vec3 r = (m * v_new - p) * inv_dt - f;
         block_force[b * nb + size_t(body)] += r;
       } else if (body >= 0) {
@@ -74,9 +74,9 @@ void grid_velocity_from_momentum(SparseGrid& grid, int from, int to, const std::
       const int body = constrained_body(node);
       Vec3 v = Vec3::Zero();
       if (body >= 0 && bodies[size_t(body)].hold_slip) {
-        const Vec3& n = bodies[size_t(body)].hold_outward;
+        const Vec3& normal = bodies[size_t(body)].hold_outward;
         if (m > 0) v = Vec3(node[from], node[from + 1], node[from + 2]) / m;
-        v -= v.dot(n) * n;
+        v -= v.dot(normal) * normal;
       } else if (body >= 0) {
         v = bodies[size_t(body)].velocity;
       } else if (m > 0) {

@@ -1,3 +1,4 @@
+#include "core/units.hpp"
 #include "post/compression_metrics.hpp"
 
 #include <algorithm>
@@ -10,11 +11,7 @@ namespace latmpm::post {
 
 namespace {
 
-std::string mm(double metres) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.3g mm", metres * 1e3);
-  return text;
-}
+std::string mm(double metres) { return format_millimetres(metres, 3); }
 
 // The first local maximum followed by a relative drop of at least `drop` before the curve
 // climbs above it again; returns the index or -1.

@@ -21,24 +21,12 @@ void ParticleSnapshot::resize(size_t n) {
   body.resize(n);
 }
 
-SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance)
-    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)) {
-  const fs::path dir = fs::path(run_dir_) / "snapshots";
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string(), "", "cannot create the snapshot directory: " + ec.message());
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("snap_", 0) == 0 && entry.path().extension() == ".h5") fs::remove(entry.path());
-  }
-  fs::remove(xdmf_path(), ec);
-  fs::remove(dir / "failure.h5", ec);  // a failed earlier run's state
-  fs::remove(fs::path(run_dir_) / "failure.xmf", ec);
-}
+namespace {
 
-SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance, std::vector<XdmfFrame> kept)
-    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)), frames_(std::move(kept)) {
-  const fs::path dir = fs::path(run_dir_) / "snapshots";
+// Creates RUN_DIR/snapshots/ and removes what an earlier run left there: every snap_*.h5
+// not among `kept`, and the failure state.
+void prepare_snapshot_directory(const std::string& run_dir, const std::vector<XdmfFrame>& kept) {
+  const fs::path dir = fs::path(run_dir) / "snapshots";
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError(dir.string(), "", "cannot create the snapshot directory: " + ec.message());
@@ -46,11 +34,25 @@ SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance, std::
     const std::string name = entry.path().filename().string();
     if (name.rfind("snap_", 0) != 0 || entry.path().extension() != ".h5") continue;
     bool keep = false;
-    for (const auto& f : frames_) keep = keep || fs::path(f.hdf5_file).filename() == entry.path().filename();
+    for (const auto& f : kept) keep = keep || fs::path(f.hdf5_file).filename() == entry.path().filename();
     if (!keep) fs::remove(entry.path());
   }
-  fs::remove(dir / "failure.h5", ec);
-  fs::remove(fs::path(run_dir_) / "failure.xmf", ec);
+  fs::remove(dir / "failure.h5", ec);  // a failed earlier run's state
+  fs::remove(fs::path(run_dir) / "failure.xmf", ec);
+}
+
+}  // namespace
+
+SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance)
+    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)) {
+  prepare_snapshot_directory(run_dir_, {});
+  std::error_code ec;
+  fs::remove(xdmf_path(), ec);
+}
+
+SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance, std::vector<XdmfFrame> kept)
+    : run_dir_(std::move(run_dir)), provenance_(std::move(provenance)), frames_(std::move(kept)) {
+  prepare_snapshot_directory(run_dir_, frames_);
   write_index(frames_, xdmf_path());
 }
 

@@ -9,14 +9,6 @@
 
 using namespace latmpm;
 
-namespace {
-void append(TriangleMesh& to, const TriangleMesh& from) {
-  const auto offset = static_cast<int32_t>(to.vertices.size());
-  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-  for (auto t : from.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-}
-}  // namespace
-
 TEST_CASE("Closed primitive meshes are valid solids with their exact volumes", "[mesh]") {
   SECTION("box") {
     const MeshReport r = check_mesh(box_mesh({0.1, -0.2, 0.3}, {0.13, -0.15, 0.37}));

@@ -12,11 +12,6 @@
 using namespace latmpm;
 
 namespace {
-void append(TriangleMesh& to, const TriangleMesh& from) {
-  const auto offset = static_cast<int32_t>(to.vertices.size());
-  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-  for (auto t : from.triangles) to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-}
 void flip(std::array<int32_t, 3>& t) { std::swap(t[1], t[2]); }
 }  // namespace
 

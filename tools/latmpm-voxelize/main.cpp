@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/units.hpp"
 #include "core/command_line.hpp"
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
@@ -74,11 +75,7 @@ void refuse(const latmpm::CommandLine& cl, const std::vector<const char*>& optio
     if (cl.given(option)) throw latmpm::InputError(std::string("--") + option, "", why);
 }
 
-std::string mm(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g mm", metres * 1e3);
-  return text;
-}
+std::string mm(double metres) { return latmpm::format_millimetres(metres, 4); }
 
 // HDF5 files start with an 8-byte signature; anything else is taken for an STL.
 bool is_hdf5(const std::string& path) {
