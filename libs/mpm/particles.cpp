@@ -3,15 +3,15 @@
 namespace latmpm::mpm {
 
 namespace {
-template <class T, class A>
-void apply(std::vector<T, A>& v, const std::vector<uint32_t>& order) {
-  std::vector<T, A> out(v.size());
+template <class T>
+void apply(std::vector<T>& v, const std::vector<uint32_t>& order) {
+  std::vector<T> out(v.size());
   for (size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
   v.swap(out);
 }
 
-template <class T, class A>
-size_t bytes(const std::vector<T, A>& v) {
+template <class T>
+size_t bytes(const std::vector<T>& v) {
   return v.capacity() * sizeof(T);
 }
 }  // namespace

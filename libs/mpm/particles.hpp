@@ -12,12 +12,8 @@
 #include <vector>
 
 #include "mpm/real.hpp"
-#include "mpm/staggered_allocator.hpp"
 
 namespace latmpm::mpm {
-
-// One tensor component of every particle (starts staggered: staggered_allocator.hpp).
-using ComponentArray = std::vector<Real, StaggeredAllocator<Real>>;
 
 struct Particles {
   std::vector<Vec3> position;        // m
@@ -25,10 +21,10 @@ struct Particles {
   std::vector<Real> mass;            // kg (density × mass scaling × initial volume)
   std::vector<Real> volume0;         // m³, initial volume V0 (current volume = J · V0)
   // F, dimensionless: F(r, c) of particle p is deformation_component[3 r + c][p].
-  std::array<ComponentArray, 9> deformation_component;
+  std::array<std::vector<Real>, 9> deformation_component;
   // Cauchy stress, Pa: Voigt component c (xx yy zz yz xz xy) of particle p is
   // stress_component[c][p].
-  std::array<ComponentArray, 6> stress_component;
+  std::array<std::vector<Real>, 6> stress_component;
   std::vector<Vec3> half_size0;      // m, initial GIMP particle-domain half-lengths (a point
                                      // set's zero half-size becomes cell_size / (2 ppc))
   std::vector<int32_t> body;         // index into Simulation::bodies()
