@@ -9,11 +9,6 @@ void apply(std::vector<T>& v, const std::vector<uint32_t>& order) {
   for (size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
   v.swap(out);
 }
-
-template <class T>
-size_t bytes(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
 }  // namespace
 
 void Particles::permute(const std::vector<uint32_t>& order) {
@@ -21,8 +16,8 @@ void Particles::permute(const std::vector<uint32_t>& order) {
   apply(velocity, order);
   apply(mass, order);
   apply(volume0, order);
-  for (auto& component : deformation_component) apply(component, order);
-  for (auto& component : stress_component) apply(component, order);
+  apply(deformation, order);
+  apply(stress, order);
   apply(half_size0, order);
   apply(body, order);
   apply(id, order);
@@ -34,21 +29,12 @@ void Particles::resize(size_t n) {
   velocity.resize(n, Vec3::Zero());
   mass.resize(n, 0);
   volume0.resize(n, 0);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) deformation_component[size_t(3 * r + c)].resize(n, r == c ? Real(1) : Real(0));
-  for (auto& component : stress_component) component.resize(n, 0);
+  deformation.resize(n, Mat3::Identity());
+  stress.resize(n, SymTensor::Zero());
   half_size0.resize(n, Vec3::Zero());
   body.resize(n, 0);
   id.resize(n, 0);
   flags.resize(n, 0);
-}
-
-size_t Particles::memory_bytes() const {
-  size_t total = bytes(position) + bytes(velocity) + bytes(mass) + bytes(volume0) + bytes(half_size0) +
-                 bytes(body) + bytes(id) + bytes(flags);
-  for (const auto& component : deformation_component) total += bytes(component);
-  for (const auto& component : stress_component) total += bytes(component);
-  return total;
 }
 
 }  // namespace latmpm::mpm

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <type_traits>
 
 #include "mpm/real.hpp"
@@ -22,14 +21,6 @@ typedef Real Axes __attribute__((vector_size(4 * sizeof(Real))));
 typedef int32_t AxesInt __attribute__((vector_size(4 * sizeof(int32_t))));
 typedef Real Pack __attribute__((vector_size(8 * sizeof(Real))));
 inline constexpr int pack_width = 8;
-
-// Eight consecutive values (of eight consecutive particles) as one Pack, and back.
-inline Pack load_pack(const Real* values) {
-  Pack v;
-  std::memcpy(&v, values, sizeof v);
-  return v;
-}
-inline void store_pack(Real* values, const Pack& v) { std::memcpy(values, &v, sizeof v); }
 
 namespace num {
 // With AVX and Real = double, Axes is an __m256d: use the single instructions for these.

@@ -354,6 +354,13 @@ void Simulation::finish_step(Real dt, Real stable) {
 size_t Simulation::active_grid_blocks() const { return impl_->grid.block_count(); }
 size_t Simulation::grid_memory_bytes() const { return impl_->grid.memory_bytes(); }
 
-size_t Simulation::particle_memory_bytes() const { return particles_.memory_bytes(); }
+size_t Simulation::particle_memory_bytes() const {
+  const Particles& p = particles_;
+  return p.position.capacity() * sizeof(Vec3) + p.velocity.capacity() * sizeof(Vec3) +
+         p.mass.capacity() * sizeof(Real) + p.volume0.capacity() * sizeof(Real) +
+         p.deformation.capacity() * sizeof(Mat3) + p.stress.capacity() * sizeof(SymTensor) +
+         p.half_size0.capacity() * sizeof(Vec3) + p.body.capacity() * sizeof(int32_t) +
+         p.id.capacity() * sizeof(uint32_t) + p.flags.capacity() * sizeof(uint8_t);
+}
 
 }  // namespace latmpm::mpm

@@ -271,7 +271,7 @@ struct Simulation::Impl {
     switch (fault) {
       case ParticleFault::not_finite: msg << "has a NaN or infinite velocity, position or stress"; break;
       case ParticleFault::inverted:
-        msg << "is inverted or crushed (J = " << ps.jacobian(p) << " <= "
+        msg << "is inverted or crushed (J = " << ps.deformation[p].determinant() << " <= "
             << settings().min_jacobian << ")";
         break;
       case ParticleFault::left_grid: msg << "left the grid (more than " << max_cell_coord << " cells from the origin)"; break;
@@ -317,7 +317,7 @@ struct Simulation::Impl {
       max_speed = std::max(max_speed, ps.velocity[p].norm());
       initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() +
           ps.volume0[p] * std::visit([&](const auto& m) {
-            return strain_energy_density(m, ps.deformation(p), ps.stress(p));
+            return strain_energy_density(m, ps.deformation[p], ps.stress[p]);
           }, body_info[b].model);
     }
     initial_centre.assign(nb, Vec3::Zero());

@@ -2,8 +2,6 @@
 // their internal (bucket-sorted) order together with the buckets and runs, so a restored run
 // scatters and gathers in exactly the order the uninterrupted one would: results agree bit
 // for bit (the thread count does not matter, simulation_impl.hpp).
-#include <algorithm>
-
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "mpm/simulation.hpp"
@@ -27,33 +25,6 @@ std::vector<V> unflatten(const std::vector<double>& d) {
     for (int i = 0; i < N; ++i) out[p].data()[i] = d[p * N + i];
   return out;
 }
-// F and σ in the checkpoint's layout: n × 9 (each F column-major, as Eigen stores a Mat3)
-// and n × 6 (Voigt), independent of the component arrays Particles keeps them in.
-std::vector<double> deformation_rows(const Particles& p) {
-  std::vector<double> out;
-  out.reserve(p.size() * 9);
-  for (size_t q = 0; q < p.size(); ++q) {
-    const Mat3 F = p.deformation(q);
-    out.insert(out.end(), F.data(), F.data() + 9);
-  }
-  return out;
-}
-std::vector<double> stress_rows(const Particles& p) {
-  std::vector<double> out;
-  out.reserve(p.size() * 6);
-  for (size_t q = 0; q < p.size(); ++q)
-    for (int c = 0; c < 6; ++c) out.push_back(p.stress_component[size_t(c)][q]);
-  return out;
-}
-void set_from_rows(Particles& p, const std::vector<double>& deformation, const std::vector<double>& stress) {
-  const size_t n = std::min(deformation.size() / 9, stress.size() / 6);
-  for (auto& component : p.deformation_component) component.assign(n, 0);
-  for (auto& component : p.stress_component) component.assign(n, 0);
-  for (size_t q = 0; q < n; ++q) {
-    p.set_deformation(q, Eigen::Map<const Mat3>(deformation.data() + 9 * q));
-    for (int c = 0; c < 6; ++c) p.stress_component[size_t(c)][q] = stress[6 * q + size_t(c)];
-  }
-}
 std::vector<double> vec3s(const std::vector<RigidBodyState>& s, Vec3 RigidBodyState::*field) {
   std::vector<double> out;
   for (const auto& r : s)
@@ -75,8 +46,8 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
   f.write(g + "/particles/velocity", flatten<Vec3, 3>(p.velocity), {n, 3});
   f.write(g + "/particles/mass", p.mass, {n});
   f.write(g + "/particles/volume0", p.volume0, {n});
-  f.write(g + "/particles/deformation", deformation_rows(p), {n, 9});
-  f.write(g + "/particles/stress", stress_rows(p), {n, 6});
+  f.write(g + "/particles/deformation", flatten<Mat3, 9>(p.deformation), {n, 9});
+  f.write(g + "/particles/stress", flatten<SymTensor, 6>(p.stress), {n, 6});
   f.write(g + "/particles/half_size0", flatten<Vec3, 3>(p.half_size0), {n, 3});
   f.write(g + "/particles/body", p.body, {n});
   f.write(g + "/particles/id", std::vector<int64_t>(p.id.begin(), p.id.end()), {n});
@@ -136,7 +107,8 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   p.velocity = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/velocity"));
   p.mass = f.read_doubles(g + "/particles/mass");
   p.volume0 = f.read_doubles(g + "/particles/volume0");
-  set_from_rows(p, f.read_doubles(g + "/particles/deformation"), f.read_doubles(g + "/particles/stress"));
+  p.deformation = unflatten<Mat3, 9>(f.read_doubles(g + "/particles/deformation"));
+  p.stress = unflatten<SymTensor, 6>(f.read_doubles(g + "/particles/stress"));
   p.half_size0 = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/half_size0"));
   p.body = f.read_int32(g + "/particles/body");
   const auto ids = f.read_int64(g + "/particles/id");

@@ -80,8 +80,7 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
     return Vec3::Zero();
   } else {
     Vec3 l = ps.half_size0[p];
-    if constexpr (Shape::stretches_with_f)
-      for (int a = 0; a < 3; ++a) l[a] *= std::abs(ps.deformation(p, a, a));
+    if constexpr (Shape::stretches_with_f) l = l.cwiseProduct(ps.deformation[p].diagonal().cwiseAbs());
     for (int a = 0; a < 3; ++a) l[a] = std::clamp(l[a], Real(1e-3) * h, Shape::max_half * h);
     return l;
   }
@@ -143,8 +142,8 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
       if constexpr (Mode::force) {
         // f_i = −V σ ∇S_i with V = J V0 the current volume.
-        const Real v = -ps.volume0[p] * ps.jacobian(p);
-        const SymTensor s = ps.stress(p);
+        const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
+        const SymTensor& s = ps.stress[p];
         fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
         fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
         fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
@@ -299,36 +298,22 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             //    interpolation so the lane-by-lane stores have long landed when the packs
             //    are read back as vectors. Idle lanes (q ≥ n) hold zero mass and volume,
             //    F = I and σ = 0: they add nothing to any sum.
-            //    A full group loads F, σ, m and V0 as whole packs from the component arrays.
-            const bool full = n == pack_width;
             Pack m{}, v[3] = {}, f_old[3][3], s[6] = {}, volume0{}, record{};
-            if (full) {
-              m = load_pack(&ps.mass[g0]);
-              if constexpr (gradient) {
-                for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) f_old[r][c] = load_pack(&ps.deformation_component[size_t(3 * r + c)][g0]);
-                for (int c = 0; c < 6; ++c) s[c] = load_pack(&ps.stress_component[size_t(c)][g0]);
-                volume0 = load_pack(&ps.volume0[g0]);
-              }
-            } else {
-              for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
-              for (int q = 0; q < n; ++q) {
-                const uint32_t p = g0 + uint32_t(q);
-                m[q] = ps.mass[p];
-                if constexpr (gradient) {
-                  for (int r = 0; r < 3; ++r)
-                    for (int c = 0; c < 3; ++c) f_old[r][c][q] = ps.deformation(p, r, c);
-                  for (int c = 0; c < 6; ++c) s[c][q] = ps.stress_component[size_t(c)][p];
-                  volume0[q] = ps.volume0[p];
-                }
-              }
-            }
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < 3; ++c) f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
             for (int q = 0; q < n; ++q) {
               const uint32_t p = g0 + uint32_t(q);
+              m[q] = ps.mass[p];
               if constexpr (Mode::velocity)
                 for (int a = 0; a < 3; ++a) v[a][q] = ps.velocity[p][a];
-              if constexpr (gradient) record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
+              if constexpr (gradient) {
+                const Mat3& F = ps.deformation[p];
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
+                for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
+                volume0[q] = ps.volume0[p];
+                record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
+              }
             }
             // 1. Interpolate from the grid, particle by particle: new velocity, its change
             //    and the velocity gradient, into lane q of the group's packs.
@@ -391,31 +376,17 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               const Pack record_volume = record * d.jacobian * volume0;
               record_stress_volume += s[2] * record_volume;
               record_volume_sum += record_volume;
-              // Checks lane by lane only when a lane fails (idle lanes: J = 1, energy 0).
-              const auto failed = (~(d.jacobian > par.min_jacobian)) | ((energy - energy) != 0);
-              bool any_failed = false;
-              for (int q = 0; q < pack_width; ++q) any_failed |= failed[q] != 0;
-              if (any_failed)
-                for (int q = 0; q < n; ++q) {
-                  const uint32_t p = g0 + uint32_t(q);
-                  const Real J = d.jacobian[q];
-                  if (!(J > par.min_jacobian))
-                    note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
-                  if (!std::isfinite(energy[q])) note_fault(tally, ParticleFault::not_finite, p);
-                }
-              if (full) {
-                for (int q = 0; q < pack_width; ++q) min_j = std::min(min_j, d.jacobian[q]);
+              for (int q = 0; q < n; ++q) {
+                const uint32_t p = g0 + uint32_t(q);
+                const Real J = d.jacobian[q];
+                if (!(J > par.min_jacobian))
+                  note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
+                if (!std::isfinite(energy[q])) note_fault(tally, ParticleFault::not_finite, p);
+                min_j = std::min(min_j, J);
+                Mat3& Fp = ps.deformation[p];
                 for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) store_pack(&ps.deformation_component[size_t(3 * r + c)][g0], F[r][c]);
-                for (int c = 0; c < 6; ++c) store_pack(&ps.stress_component[size_t(c)][g0], s[c]);
-              } else {
-                for (int q = 0; q < n; ++q) {
-                  const uint32_t p = g0 + uint32_t(q);
-                  min_j = std::min(min_j, d.jacobian[q]);
-                  for (int r = 0; r < 3; ++r)
-                    for (int c = 0; c < 3; ++c) ps.deformation_component[size_t(3 * r + c)][p] = F[r][c][q];
-                  for (int c = 0; c < 6; ++c) ps.stress_component[size_t(c)][p] = s[c][q];
-                }
+                  for (int c = 0; c < 3; ++c) Fp(r, c) = F[r][c][q];
+                for (int c = 0; c < 6; ++c) ps.stress[p][c] = s[c][q];
               }
             }
           }

@@ -103,7 +103,7 @@ ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) {
       s.position[3 * i + k] = p.position[q][k];
       s.velocity[3 * i + k] = float(p.velocity[q][k]);
     }
-    for (int k = 0; k < 6; ++k) s.stress[6 * i + k] = float(p.stress_component[size_t(tensor6_from_voigt[k])][q]);
+    for (int k = 0; k < 6; ++k) s.stress[6 * i + k] = float(p.stress[q][tensor6_from_voigt[k]]);
     s.von_mises[i] = float(p.von_mises_stress(q));
     s.jacobian[i] = float(p.jacobian(q));
     s.body[i] = p.body[q];

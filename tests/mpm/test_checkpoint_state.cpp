@@ -49,7 +49,7 @@ TEST_CASE("A simulation restored from its saved state continues bit for bit", "[
     for (size_t p = 0; p < ps.size(); ++p) {
       v.push_back(ps.id[p]);
       for (int a = 0; a < 3; ++a) v.push_back(ps.position[p][a]), v.push_back(ps.velocity[p][a]);
-      for (int c = 0; c < 6; ++c) v.push_back(ps.stress_component[size_t(c)][p]);
+      for (int c = 0; c < 6; ++c) v.push_back(ps.stress[p][c]);
     }
     const auto& d = sim.last_diagnostics();
     v.insert(v.end(), {d.time, d.dt, d.kinetic_energy, d.strain_energy, d.external_work, d.energy_error,

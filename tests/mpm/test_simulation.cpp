@@ -35,7 +35,7 @@ TEST_CASE("Results are identical for one and two threads", "[mpm][simulation]") 
     for (size_t p = 0; p < ps.size(); ++p) {
       state.push_back(ps.id[p]);
       for (int a = 0; a < 3; ++a) state.push_back(ps.position[p][a]), state.push_back(ps.velocity[p][a]);
-      for (int c = 0; c < 6; ++c) state.push_back(ps.stress_component[size_t(c)][p]);
+      for (int c = 0; c < 6; ++c) state.push_back(ps.stress[p][c]);
     }
     const auto& d = sim.last_diagnostics();
     state.insert(state.end(), {d.reaction[1][0], d.reaction[1][2], d.kinetic_energy, d.strain_energy, d.external_work});
@@ -60,7 +60,7 @@ TEST_CASE("The record-layer force is the layer's mean vertical stress times its 
   Simulation sim(points, {deformable("base", elastic(1e6, 0.3, 1000))}, s);
   CHECK(sim.record_area() == Approx(4 * h * 3 * h).epsilon(1e-12));
   const Real sigma_zz = -2e5;  // Pa, compression
-  for (auto& stress_zz : sim.mutable_particles().stress_component[2]) stress_zz = sigma_zz;
+  for (auto& stress : sim.mutable_particles().stress) stress[2] = sigma_zz;
   sim.step();
   // One tiny step changes the stress by a relative 1e-6 at most.
   CHECK(sim.last_diagnostics().record_force == Approx(sigma_zz * 12 * h * h).epsilon(1e-4));

@@ -97,8 +97,8 @@ TEST_CASE("A rigid translation is exact for every shape function and update sche
   for (size_t p = 0; p < ps.size(); ++p) {
     position_error = std::max(position_error, (ps.position[p] - points.position[ps.id[p]] - sim.time() * velocity).norm());
     velocity_error = std::max(velocity_error, (ps.velocity[p] - velocity).norm());
-    strain_error = std::max(strain_error, (ps.deformation(p) - Mat3::Identity()).norm());
-    stress = std::max(stress, ps.stress(p).norm());
+    strain_error = std::max(strain_error, (ps.deformation[p] - Mat3::Identity()).norm());
+    stress = std::max(stress, ps.stress[p].norm());
   }
   CHECK(sim.time() * velocity.norm() > h);
   CHECK(position_error < 1e-12 * h * 40);
