@@ -22,6 +22,7 @@ void Particles::permute(const std::vector<uint32_t>& order) {
   apply(body, order);
   apply(id, order);
   apply(flags, order);
+  if (!contact_body.empty()) apply(contact_body, order), apply(contact_anchor, order);
 }
 
 void Particles::resize(size_t n) {
@@ -35,6 +36,7 @@ void Particles::resize(size_t n) {
   body.resize(n, 0);
   id.resize(n, 0);
   flags.resize(n, 0);
+  if (!contact_body.empty()) contact_body.resize(n, -1), contact_anchor.resize(n, Vec3::Zero());
 }
 
 }  // namespace latmpm::mpm

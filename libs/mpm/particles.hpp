@@ -21,6 +21,11 @@ struct Particles {
   std::vector<int32_t> body;         // index into Simulation::bodies()
   std::vector<uint32_t> id;          // index in the PointSet the particles came from
   std::vector<uint8_t> flags;        // bit flags below
+  // Penalty contact history (rigid_contact.hpp), empty unless a rigid body uses it: the
+  // rigid body a point is attached to (−1: none) and its attachment point x_A in that
+  // body's frame (m, x_A − the body's displacement).
+  std::vector<int32_t> contact_body;
+  std::vector<Vec3> contact_anchor;
 
   static constexpr uint8_t record_flag = 1;  // carries the record tag
   static constexpr uint8_t held_flag = 2;    // deformable point whose stencil nodes are held at rest

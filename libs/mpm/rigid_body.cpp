@@ -12,6 +12,7 @@ namespace latmpm::mpm {
 
 std::string to_string(RigidShape shape) { return shape == RigidShape::box ? "box" : "half_space"; }
 std::string to_string(RigidMotion motion) { return motion == RigidMotion::driven ? "driven" : "free"; }
+std::string to_string(RigidCoupling coupling) { return coupling == RigidCoupling::no_slip ? "no_slip" : "penalty"; }
 
 void validate(const RigidBodySettings& b, const std::string& where) {
   const std::string key = "rigid_bodies." + b.name + ".";
@@ -28,6 +29,9 @@ void validate(const RigidBodySettings& b, const std::string& where) {
   if (!b.velocity.allFinite()) throw InputError(where, key + "velocity", "must be finite");
   if (b.motion == RigidMotion::free && !(b.mass > 0 && std::isfinite(b.mass)))
     throw InputError(where, key + "mass", "a free rigid body needs a positive mass");
+  if (!(b.contact_stiffness >= 0 && std::isfinite(b.contact_stiffness)))
+    throw InputError(where, key + "contact.stiffness", "must be positive (or 0 for the default)");
+  if (!(b.friction >= 0)) throw InputError(where, key + "contact.friction", "must be 0 or positive");
 }
 
 bool rigid_body_contains(const RigidBodySettings& b, const Vec3& d, const Vec3& x, Real h) {
@@ -52,6 +56,9 @@ template <class Fn>
 void for_each_rigid_node(SparseGrid& grid, Real h, const std::vector<RigidBodySettings>& bodies,
                          const std::vector<RigidBodyState>& states, Fn&& fn) {
   constexpr int bw = SparseGrid::block_width;
+  bool any_no_slip = false;
+  for (const auto& body : bodies) any_no_slip |= body.coupling == RigidCoupling::no_slip;
+  if (!any_no_slip) return;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.block_count(), 8), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t b = r.begin(); b < r.end(); ++b) {
       const auto c = grid.coord(b);
@@ -63,7 +70,8 @@ void for_each_rigid_node(SparseGrid& grid, Real h, const std::vector<RigidBodySe
             if (!(node[lane::mass] > 0) || node[lane::constraint] > 0) continue;
             const Vec3 x = SparseGrid::node_position(c[0] * bw + i, c[1] * bw + j, c[2] * bw + k, h);
             for (size_t body = 0; body < bodies.size(); ++body)
-              if (rigid_body_contains(bodies[body], states[body].displacement, x, h)) {
+              if (bodies[body].coupling == RigidCoupling::no_slip &&
+                  rigid_body_contains(bodies[body], states[body].displacement, x, h)) {
                 fn(b, node, body);
                 break;
               }

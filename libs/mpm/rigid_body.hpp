@@ -13,6 +13,10 @@
 // update, so r already nets out the node's internal force and gravity) — the same reaction
 // the point-defined fixed and driven bodies report (docs/solver.md, "Boundary conditions").
 //
+// Alternatively a body couples by penalty contact of the material points against its surface
+// with Coulomb friction (paper B Sec. 2.1, Ding & Schroeder; rigid_contact.hpp): its nodes are
+// then left free, the points it touches get a force, and R^n is the sum of those forces.
+//
 // Order within a step n (docs/solver.md, "Rigid bodies"): the grid update uses V^n and the
 // geometry at X^n and yields the reaction R^n (force of the body on the model); then a free
 // body integrates M dV/dt = −R^n + M g:
@@ -39,8 +43,15 @@ enum class RigidMotion {
   free,    // M dV/dt = force from the specimen + M g (if `gravity`); `velocity` is V(0)
 };
 
+// How a body acts on the material.
+enum class RigidCoupling {
+  no_slip,  // the grid nodes its support overlaps take its velocity (above); the default
+  penalty,  // penalty contact of the points against its surface, Coulomb friction (rigid_contact.hpp)
+};
+
 std::string to_string(RigidShape shape);
 std::string to_string(RigidMotion motion);
+std::string to_string(RigidCoupling coupling);
 
 struct RigidBodySettings {
   std::string name;
@@ -51,10 +62,17 @@ struct RigidBodySettings {
   Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free)
   Real mass = 0;                 // kg, free bodies
   bool gravity = true;           // free bodies: Settings::gravity acts on them
+  RigidCoupling coupling = RigidCoupling::no_slip;
+  // Penalty contact: κ, the spring between a point and its attachment point (N/m, per point);
+  // 0 takes the default m_p c²/h² of the point's material (rigid_contact.hpp).
+  Real contact_stiffness = 0;
+  // Penalty contact: Coulomb coefficient μ ≥ 0; 0 slides freely, infinity never slides.
+  Real friction = 0;
 };
 
 // Throws InputError(where, "rigid_bodies.<name>.<key>", ...) for an empty or inverted box, a
-// zero normal, a free body without a positive mass, non-finite values.
+// zero normal, a free body without a positive mass, non-finite values, a negative or
+// non-finite contact stiffness, a negative or NaN friction coefficient.
 void validate(const RigidBodySettings& body, const std::string& where);
 
 // What changes during a run.
@@ -70,7 +88,8 @@ struct RigidBodyState {
 bool rigid_body_contains(const RigidBodySettings& body, const Vec3& displacement, const Vec3& x, Real h);
 
 // After update_grid_velocities (lanes m, v_new, Δv, constraint): every node with mass, not
-// held by a point-defined body, inside body k takes V_k; Δv is corrected to match. Returns
+// held by a point-defined body, inside no-slip body k takes V_k (penalty bodies are skipped:
+// their reaction is zero here); Δv is corrected to match. Returns
 // per body the reaction Σ m (V − v_new)/dt (N). Nodes inside two bodies go to the first.
 // Deterministic (per-block sums added in block order).
 std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,

@@ -235,7 +235,10 @@ void Simulation::add_rigid_body(const RigidBodySettings& body) {
   diagnostics_.rigid = rigid_states_;
   diagnostics_.rigid_energy = initial_rigid_energy_;
   impl_->refresh_needed = true;  // its speed enters the stable time step
+  if (body.coupling == RigidCoupling::penalty) impl_->enable_penalty_contact();
 }
+
+const std::vector<Vec3>& Simulation::contact_forces() const { return impl_->contact.force; }
 
 Real Simulation::stable_time_step() const { return impl_->stable_time_step(); }
 
@@ -247,7 +250,9 @@ Real Simulation::next_time_step() const {
     if (settings_.fixed_time_step > limit) {
       std::ostringstream msg;
       msg << "step " << diagnostics_.step + 1 << " (t = " << diagnostics_.time << " s): the fixed time step "
-          << settings_.fixed_time_step << " s exceeds the stable limit h/(c+|v|) = " << limit
+          << settings_.fixed_time_step << " s exceeds the stable limit "
+          << (impl_->penalty_contact ? "2/sqrt((2(c+|v|)/h)^2 + contact stiffness/point mass)" : "h/(c+|v|)")
+          << " = " << limit
           << " s; use a smaller time step or the automatic one";
       throw NumericalError(msg.str());
     }
@@ -311,9 +316,18 @@ void Simulation::finish_step(Real dt, Real stable) {
   }
   // Geometric rigid bodies: their reactions of this step at V^n, then they move (rigid_body.hpp).
   Real rigid_energy = 0, rigid_speed = 0;
+  // A penalty body's power on the model is that of its contact forces at the points'
+  // velocities, the mean of the step's start and end (rigid_contact.hpp): the energy its
+  // springs give back counts as work put in, and their stretch and the friction's loss stay
+  // outside the model's balance.
+  std::vector<Real> contact_power_end;
+  if (im.penalty_contact) contact_power_end = contact_power(particles_, im.contact);
   for (size_t k = 0; k < rigid_bodies_.size(); ++k) {
     const Vec3 r = k < im.rigid_reactions.size() ? im.rigid_reactions[k] : Vec3::Zero();
-    const Real rigid_power = r.dot(rigid_states_[k].velocity);
+    const bool penalty = im.penalty_contact && rigid_bodies_[k].coupling == RigidCoupling::penalty &&
+                         k < im.contact.power.size();
+    const Real rigid_power = penalty ? Real(0.5) * (im.contact.power[k] + contact_power_end[k])
+                                     : r.dot(rigid_states_[k].velocity);
     power += rigid_power;
     if (rigid_bodies_[k].motion == RigidMotion::driven) driven_rigid_work_ += dt * rigid_power;
     advance_rigid_body(rigid_bodies_[k], rigid_states_[k], r, settings_.gravity, dt);
@@ -360,7 +374,8 @@ size_t Simulation::particle_memory_bytes() const {
          p.mass.capacity() * sizeof(Real) + p.volume0.capacity() * sizeof(Real) +
          p.deformation.capacity() * sizeof(Mat3) + p.stress.capacity() * sizeof(SymTensor) +
          p.half_size0.capacity() * sizeof(Vec3) + p.body.capacity() * sizeof(int32_t) +
-         p.id.capacity() * sizeof(uint32_t) + p.flags.capacity() * sizeof(uint8_t);
+         p.id.capacity() * sizeof(uint32_t) + p.flags.capacity() * sizeof(uint8_t) +
+         p.contact_body.capacity() * sizeof(int32_t) + p.contact_anchor.capacity() * sizeof(Vec3);
 }
 
 }  // namespace latmpm::mpm

@@ -56,6 +56,9 @@ class Simulation {
   void add_rigid_body(const RigidBodySettings& body);
   const std::vector<RigidBodySettings>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<RigidBodyState>& rigid_states() const { return rigid_states_; }
+  // Per point, in particles() order: the penalty contact force of the last step (N,
+  // rigid_contact.hpp; zero for points not in contact). Empty without penalty bodies.
+  const std::vector<Vec3>& contact_forces() const;
 
   // The time step the next step() will take (s): the automatic stable step, or the fixed
   // one. Throws NumericalError if a fixed step exceeds the stable limit.

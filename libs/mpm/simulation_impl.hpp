@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/particle_buckets.hpp"
+#include "mpm/rigid_contact.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/sparse_grid.hpp"
 #include "mpm/transfer.hpp"
@@ -53,6 +54,11 @@ struct Simulation::Impl {
   Reactions reactions;
   std::vector<Real> occupancy;  // DDMP: deformable volume per cell (cell_occupancy.hpp)
   std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
+  // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
+  bool penalty_contact = false;
+  std::vector<ContactMaterial> contact_materials;  // per point body
+  ContactForces contact;                           // of the current step, in particle order
+  Real contact_rate_sq = 0;                        // largest κ_p/m_p, 1/s²
 
   explicit Impl(Simulation& s, int threads)
       : sim(s), arena(threads > 0 ? threads : tbb::task_arena::automatic) {}
@@ -186,6 +192,7 @@ struct Simulation::Impl {
   void step_usl(Real dt) {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
+    add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     couple_rigid(dt);
     gather<Shape, GatherAll>(dt);
@@ -195,6 +202,7 @@ struct Simulation::Impl {
   void step_musl(Real dt) {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
+    add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     couple_rigid(dt);
     gather<Shape, GatherVelocity>(dt);
@@ -216,14 +224,63 @@ struct Simulation::Impl {
     gather<Shape, GatherStrain>(dt);
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterForce>();
+    add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     couple_rigid(dt);
     gather<Shape, GatherMotion>(dt);
   }
 
-  // Geometric rigid bodies take their nodes after the grid update (rigid_body.hpp).
+  // Geometric rigid bodies take their nodes after the grid update (rigid_body.hpp); penalty
+  // bodies push with the sum of their points' contact forces instead.
   void couple_rigid(Real dt) {
     rigid_reactions = couple_rigid_bodies(grid, settings().cell_size, dt, sim.rigid_bodies_, sim.rigid_states_);
+    if (penalty_contact)
+      for (size_t k = 0; k < rigid_reactions.size(); ++k) rigid_reactions[k] += contact.reaction[k];
+  }
+
+  // --- Penalty contact (rigid_contact.hpp) ----------------------------------------------
+
+  // After a penalty body was added: contact history for every point, the default stiffness
+  // per body and the contact's bound on the time step.
+  void enable_penalty_contact() {
+    penalty_contact = true;
+    Particles& ps = particles();
+    if (ps.contact_body.empty()) ps.contact_body.assign(ps.size(), -1), ps.contact_anchor.assign(ps.size(), Vec3::Zero());
+    contact_materials.assign(body_info.size(), ContactMaterial{});
+    for (size_t b = 0; b < body_info.size(); ++b) {
+      if (body_info[b].role != BodyRole::deformable) continue;
+      const Real c2 = std::visit([](const auto& m) { return m.wave_speed_squared(1); }, body_info[b].model);
+      contact_materials[b] = {true, default_contact_stiffness_per_mass(c2, settings().cell_size)};
+    }
+    contact_rate_sq = stable_contact_rate_squared(ps, contact_materials, sim.rigid_bodies_);
+  }
+
+  // The contact forces at the start of the step (positions x^n, bodies at X^n) into the
+  // force lanes, f_i += S_ip f_p, point by point in order (deterministic). DDMP's weights
+  // are the linear ones (shape_ddmp.hpp), so those points take the linear stencil.
+  template <class Shape>
+  void add_contact_forces() {
+    if (!penalty_contact) return;
+    update_penalty_contacts(particles(), contact_materials, sim.rigid_bodies_, sim.rigid_states_, contact);
+    using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
+    constexpr int N = Weights::nodes_per_axis, bw = SparseGrid::block_width;
+    const Real h = settings().cell_size;
+    for (uint32_t p : contact.touching) {
+      const auto st = make_stencil<Weights>(particles().position[p], stencil_half_size<Weights>(particles(), p, h), 1 / h);
+      const Vec3& f = contact.force[p];
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j)
+          for (int k = 0; k < N; ++k) {
+            const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+            if (!(w > 0)) continue;
+            const int node[3] = {st.base[0] + i, st.base[1] + j, st.base[2] + k};
+            const int block = grid.find(floor_div(node[0], bw), floor_div(node[1], bw), floor_div(node[2], bw));
+            Real* lanes = grid.block(size_t(block)) +
+                          SparseGrid::node_offset(node[0] - bw * floor_div(node[0], bw), node[1] - bw * floor_div(node[1], bw),
+                                                  node[2] - bw * floor_div(node[2], bw));
+            for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
+          }
+    }
   }
 
   // --- Sums, diagnostics and checks ------------------------------------------------------
@@ -326,9 +383,15 @@ struct Simulation::Impl {
     refresh_needed = false;
   }
 
+  // cfl · h/(c + |v|); with penalty contact cfl · 2/√(ω² + κ/m), ω = 2(c + |v|)/h the
+  // grid's highest frequency and κ/m the largest of a contact spring (rigid_contact.hpp).
   Real stable_time_step() {
     if (refresh_needed) refresh();
     const Real speed = max_wave_speed + max_speed;
+    if (contact_rate_sq > 0) {
+      const Real rate = speed / settings().cell_size;
+      return settings().cfl / std::sqrt(rate * rate + contact_rate_sq / 4);
+    }
     return speed > 0 ? settings().cfl * settings().cell_size / speed : std::numeric_limits<Real>::infinity();
   }
 };

@@ -20,6 +20,7 @@ void Simulation::stage_particles_to_grid() {
 void Simulation::stage_grid_update(Real dt) {
   auto& im = *impl_;
   im.arena.execute([&] {
+    with_shape_function(settings_.shape_function, [&](auto shape) { im.add_contact_forces<decltype(shape)>(); });
     im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
     im.couple_rigid(dt);
   });

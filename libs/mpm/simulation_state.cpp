@@ -52,6 +52,10 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
   f.write(g + "/particles/body", p.body, {n});
   f.write(g + "/particles/id", std::vector<int64_t>(p.id.begin(), p.id.end()), {n});
   f.write(g + "/particles/flags", p.flags, {n});
+  if (!p.contact_body.empty()) {  // penalty contact history (rigid_contact.hpp)
+    f.write(g + "/particles/contact_body", p.contact_body, {n});
+    f.write(g + "/particles/contact_anchor", flatten<Vec3, 3>(p.contact_anchor), {n, 3});
+  }
 
   const auto& im = *impl_;
   std::vector<int64_t> buckets, runs;
@@ -114,6 +118,13 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   const auto ids = f.read_int64(g + "/particles/id");
   p.id.assign(ids.begin(), ids.end());
   p.flags = f.read_uint8(g + "/particles/flags");
+  if (!p.contact_body.empty()) {
+    if (!f.exists(g + "/particles/contact_body"))
+      throw InputError(f.path(), g + "/particles/contact_body",
+                       "missing: the scene has a penalty-contact rigid body, the checkpoint's run had none");
+    p.contact_body = f.read_int32(g + "/particles/contact_body");
+    p.contact_anchor = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/contact_anchor"));
+  }
 
   const auto b = f.read_int64(g + "/buckets/buckets");
   const auto r = f.read_int64(g + "/buckets/runs");

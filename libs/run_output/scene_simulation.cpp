@@ -64,6 +64,9 @@ std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene) {
     b.velocity = r.velocity;
     b.mass = r.mass;
     b.gravity = r.gravity;
+    b.coupling = r.contact == RigidBodySpec::penalty ? mpm::RigidCoupling::penalty : mpm::RigidCoupling::no_slip;
+    b.friction = r.friction;
+    b.contact_stiffness = r.contact_stiffness;
     mpm::validate(b, r.where);
     out.push_back(b);
   }

@@ -31,6 +31,11 @@ struct RigidBodySpec {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: prescribed (driven), initial (free)
   double mass = 0;       // kg (free)
   bool gravity = true;   // free: gravity acts on it
+  // contact = { model = "penalty", friction = 0.1, stiffness = "2e4N/m" }: penalty contact of
+  // the points against its surface with Coulomb friction instead of no-slip grid coupling.
+  enum Contact { no_slip, penalty } contact = no_slip;
+  double friction = 0;           // μ ≥ 0; infinity for "stick"
+  double contact_stiffness = 0;  // N/m per point; 0: the solver's default from the material
   std::string name;
   std::string where;
 };

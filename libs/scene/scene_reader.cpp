@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "scene/scene.hpp"
@@ -156,6 +157,33 @@ void read_bodies(TableReader bodies, Scene& s) {
   std::stable_sort(s.bodies.begin(), s.bodies.end(), [](const BodySpec& a, const BodySpec& b) { return a.name < b.name; });
 }
 
+// contact = { model, friction, stiffness }: how a rigid body acts on the material.
+void read_rigid_contact(TableReader& b, RigidBodySpec& body) {
+  auto contact = b.optional_table("contact");
+  if (!contact) return;
+  body.contact = contact->choice("model", {"no_slip", "penalty"}, "no_slip") == "penalty" ? RigidBodySpec::penalty
+                                                                                          : RigidBodySpec::no_slip;
+  if (body.contact == RigidBodySpec::no_slip) {
+    for (const char* key : {"friction", "stiffness"})
+      if (contact->has(key)) contact->fail(key, "only penalty contact (model = \"penalty\") takes it");
+  } else {
+    // μ: a number ≥ 0 (0 slides freely) or "stick" (never slides).
+    if (contact->has_text("friction")) {
+      if (contact->text("friction") != "stick")
+        contact->fail("friction", "expected a number >= 0 or \"stick\"");
+      body.friction = std::numeric_limits<double>::infinity();
+    } else {
+      body.friction = contact->number("friction");
+      if (!(body.friction >= 0)) contact->fail("friction", "must be 0 (frictionless) or positive");
+    }
+    if (contact->has("stiffness")) {
+      body.contact_stiffness = contact->quantity("stiffness", dimension::stiffness);
+      if (!(body.contact_stiffness > 0)) contact->fail("stiffness", "must be positive (leave it out for the default)");
+    }
+  }
+  contact->finish();
+}
+
 void read_rigid_bodies(TableReader rigid, Scene& s) {
   for (const std::string& name : rigid.keys()) {
     TableReader b = rigid.table(name);
@@ -187,6 +215,7 @@ void read_rigid_bodies(TableReader rigid, Scene& s) {
       if (!(body.mass > 0)) b.fail("mass", "must be positive");
       body.gravity = b.boolean("gravity", true);
     }
+    read_rigid_contact(b, body);
     b.finish();
     if (s.body(name)) b.fail("motion", "a point body of the same name exists; give the rigid body another name");
     s.rigid_bodies.push_back(body);

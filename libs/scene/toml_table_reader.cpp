@@ -161,6 +161,11 @@ toml::node* TableReader::find(const std::string& key) {
 
 bool TableReader::has(const std::string& key) { return find(key) != nullptr; }
 
+bool TableReader::has_text(const std::string& key) {
+  const toml::node* node = find(key);
+  return node && node->is_string();
+}
+
 toml::node& TableReader::require(const std::string& key) {
   toml::node* node = find(key);
   if (!node) {

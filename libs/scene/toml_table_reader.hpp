@@ -51,6 +51,7 @@ class TableReader {
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
   bool has(const std::string& key);  // also declares the key as known
+  bool has_text(const std::string& key);  // present and a string; declares the key as known
   // Required values (missing -> error naming the table).
   double quantity(const std::string& key, const Dimension& dimension);
   double number(const std::string& key);

@@ -43,6 +43,7 @@ Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set grid.shape=linear --check
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set run.max_steps=100 -o half --quiet
   $ latmpm-solve --resume half --set run.max_steps=0 --quiet
+  $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-platen-contact.toml --set points.0.file=c-points.h5 --set run.max_steps=300 -o platen --quiet
 )";
 
 int solve(int argc, char** argv) {
