@@ -5,7 +5,7 @@
 // j over the 8 corners of the particle's cell, so i reaches one node further per side:
 // a 4×4×4 stencil, nodes c−1 … c+2 for a particle in cell c.
 //
-// Decision (docs/solver.md, "DDMP: hourglass modes and α"): the partition function is
+// Decision (docs/solver.md, "DDMP", "Decision — α"): the partition function is
 //   α(x) = peak · Π_axes [4 f_a (1 − f_a)]^exponent,  f the position in the cell,
 // default peak 1, exponent 1/8 (Settings::ddmp_alpha_peak, ddmp_alpha_exponent). Eq. 5 read
 // literally in 3D, α = ½ {Π_{j=1..8} 2 S_j}^{1/14}, is this form with peak ½·2^(−16/14) =

@@ -1,4 +1,4 @@
-// DDMP's hourglass modes (docs/solver.md, "DDMP: hourglass modes and α"). The smoothed part
+// DDMP's hourglass modes (docs/solver.md, "DDMP", "Decision — α"). The smoothed part
 // of Eq. 7 is, per axis, a central difference over two cells ((v_{j+1} − v_{j−1}) / 2h in
 // 1D): an odd–even nodal velocity pattern gives it no strain, and only α ∇S resists it.
 // Independent check: the stiffness K = Σ_p V_p B_pᵀ D B_p of a free 4×4×4-cell block with
