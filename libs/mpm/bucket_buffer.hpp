@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mpm/particle_buckets.hpp"
+#include "mpm/shape_ddmp.hpp"
 #include "mpm/sparse_grid.hpp"
 
 namespace latmpm::mpm {
@@ -26,6 +27,7 @@ struct BucketBuffer {
   // DDMP only (cell_occupancy.hpp): 1 for each cell of the buffer (named by its lowest
   // node, same indexing as the nodes without lanes) that holds deformable material.
   std::vector<uint8_t> occupied;
+  DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
 
   void attach(const Bucket& b) {
     for (int a = 0; a < 3; ++a) origin[a] = ParticleBuckets::cells * b.coord[a] + ParticleBuckets::buffer_lo;

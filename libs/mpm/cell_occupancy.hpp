@@ -59,9 +59,11 @@ inline void mark_occupied_cells(const ParticleBuckets& buckets, const std::vecto
     });
 }
 
-// Marks the bucket's buffer cells that belong to Ω: at least half filled, Σ V0 ≥ h³/2.
+// Marks the bucket's buffer cells that belong to Ω: at least half filled, Σ V0 ≥ h³/2; and
+// gives the buffer the run's partition function α.
 inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::vector<Real>& cell_volume,
-                           Real h, BucketBuffer& buffer) {
+                           Real h, const DdmpPartition& alpha, BucketBuffer& buffer) {
+  buffer.ddmp_alpha = alpha;
   constexpr int w = BucketBuffer::width;
   const Real half_cell = Real(0.5) * h * h * h;
   buffer.occupied.assign(size_t(w) * w * w, 0);

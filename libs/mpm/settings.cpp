@@ -16,6 +16,9 @@ void validate(const Settings& s, const std::string& where) {
     throw InputError(where, "time_step", "must be a non-negative time");
   if (!(s.max_time_step >= 0) || !std::isfinite(s.max_time_step))
     throw InputError(where, "max_time_step", "must be a non-negative time");
+  if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1))
+    throw InputError(where, "ddmp_alpha_peak", "must lie in (0, 1]");
+  if (!positive(s.ddmp_alpha_exponent)) throw InputError(where, "ddmp_alpha_exponent", "must be positive");
   if (!positive(s.mass_scaling)) throw InputError(where, "mass_scaling", "must be positive");
   if (!s.gravity.allFinite()) throw InputError(where, "gravity", "must be finite");
   if (!(s.record_layer_thickness >= 0)) throw InputError(where, "record_layer_thickness", "must not be negative");

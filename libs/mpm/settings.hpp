@@ -24,6 +24,12 @@ struct Settings {
   // Weight of FLIP in the particle velocity update, 0 = PIC, 1 = FLIP. 0.99 is usual:
   // almost no numerical damping, enough to stop ringing of the grid's null modes.
   Real flip_blend = 0.99;
+  // DDMP's partition function α = peak · Π_axes [4 f (1 − f)]^exponent, f the point's
+  // position in its cell (shape_ddmp.hpp; docs/solver.md, "DDMP", "Decision — α"):
+  // α ∇S is what resists the odd–even modes the smoothed gradient cannot see. Paper A's
+  // Eq. 5 in 3D is peak 0.227, exponent 2/7.
+  Real ddmp_alpha_peak = 1;          // in (0, 1]
+  Real ddmp_alpha_exponent = 0.125;  // > 0
 
   // Time step: automatic, dt = cfl · h / max_p(c_p + |v_p|), c_p the dilatational wave
   // speed of the particle's material (at its current J), re-evaluated every step.

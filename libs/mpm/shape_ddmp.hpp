@@ -2,9 +2,18 @@
 // Eq. 4–8): the original MPM's linear shape functions S_i for mass, momentum and velocity,
 // and a modified gradient for the internal force and the velocity gradient,
 //   ∇̄S_i(x) = α(x) ∇S_i(x) + [1 − α(x)] Σ_j S_j(x)/V_j ∫_Ω S_j ∇S_i dV,            (Eq. 7)
-//   α(x) = ½ {Π_{j=1..n_c} 2 S_j(x)}^{3/(2 (n_c − 1) d)},  n_c = 8, d = 3,             (Eq. 5)
 // j over the 8 corners of the particle's cell, so i reaches one node further per side:
 // a 4×4×4 stencil, nodes c−1 … c+2 for a particle in cell c.
+//
+// Decision (docs/solver.md, "DDMP", "Decision — α"): the partition function is
+//   α(x) = peak · Π_axes [4 f_a (1 − f_a)]^exponent,  f the position in the cell,
+// default peak 1, exponent 1/8 (Settings::ddmp_alpha_peak, ddmp_alpha_exponent). Eq. 5 read
+// literally in 3D, α = ½ {Π_{j=1..8} 2 S_j}^{1/14}, is this form with peak ½·2^(−16/14) =
+// 0.227 and exponent 2/7. The smoothed part is a two-cell-wide nodal average, blind to
+// odd–even nodal velocity patterns; only α ∇S resists them. With Eq. 5's α a 4³-cell block
+// has ~120 such near-zero-energy modes below its lowest physical one, the bending mode
+// loses its energy into them once material crosses cells (measured: tests/mpm). The paper
+// asks of α only that it be continuous, positive and zero on cell faces; this one is.
 //
 // Decision (docs/solver.md, "DDMP"): Ω is the union of the grid cells at least half filled
 // with deformable material this step (Σ V0 of their points ≥ h³/2, cell_occupancy.hpp), and
@@ -55,25 +64,33 @@ constexpr int ddmp_cell_bit(int dx, int dy, int dz) { return (dx + 1) * 9 + (dy 
 inline constexpr uint32_t ddmp_all_occupied = (uint32_t(1) << 27) - 1;
 
 struct DdmpStencil : Stencil<4> {
-  Real alpha;          // α(x), Eq. 5
+  Real alpha;          // α(x), the partition function (Eq. 5's role)
   Vec3 smoothed[64];   // (1 − α) Σ_j S_j/V_j ∫_Ω S_j ∇S_i dV for node (i, j, k) at [(i·4 + j)·4 + k], 1/m
 };
 
-// α(x) of Eq. 5 from the particle's fractional position f ∈ [0, 1)³ in its cell:
-// Π_j 2 S_j = 2⁸ Π_axes (f (1 − f))⁴ over the 8 corners of the tensor-product cell.
-inline Real ddmp_partition(const Vec3& f) {
+// The partition function α(x) = peak · Π_axes [4 f_a (1 − f_a)]^exponent (Eq. 5's role).
+struct DdmpPartition {
+  Real peak = 1;                // α at the cell centre, in (0, 1]
+  Real exponent = Real(1) / 8;  // per axis; α ~ (4 d/h)^exponent at a distance d from a face
+};
+// Eq. 5 as printed, in 3D (n_c = 8, d = 3): ½ {Π_j 2 S_j}^{1/14} with Π_j 2 S_j =
+// 2⁸ Π_a (f_a (1 − f_a))⁴ = 2^(−16) Π_a (4 f_a (1 − f_a))⁴, i.e. peak ½·2^(−16/14), exponent 2/7.
+inline const DdmpPartition ddmp_eq5_partition{Real(0.5) * std::pow(Real(2), Real(-16) / 14), Real(2) / 7};
+
+// α(x) from the particle's fractional position f ∈ [0, 1)³ in its cell.
+inline Real ddmp_partition(const Vec3& f, const DdmpPartition& alpha = {}) {
   Real p = 1;
-  for (int a = 0; a < 3; ++a) p *= f[a] * (1 - f[a]);
+  for (int a = 0; a < 3; ++a) p *= 4 * f[a] * (1 - f[a]);
   if (!(p > 0)) return 0;
-  constexpr Real exponent = Real(3) / (2 * (8 - 1) * 3);  // 3 / (2 (n_c − 1) d) = 1/14
-  return Real(0.5) * std::pow(Real(256) * p * p * p * p, exponent);
+  return alpha.peak * std::pow(p, alpha.exponent);
 }
 
 // The stencil at x (m) for cell size 1/inv_h, with `occupied` the 27-bit mask of the cells
 // of Ω around x's cell (ddmp_cell_bit).
 // Without `smoothed` only S and α∇S are filled (passes that need no gradient: the smoothed
 // part is most of the cost).
-inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied, bool smoothed = true) {
+inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupied, const DdmpPartition& partition = {},
+                                     bool smoothed = true) {
   DdmpStencil st;
   int cell[3];
   Real N[3][2];  // linear weights of the cell's two nodes per axis
@@ -100,7 +117,7 @@ inline DdmpStencil make_ddmp_stencil(const Vec3& x, Real inv_h, uint32_t occupie
         count[jx][jy][jz] = n;
         if (n > 0) covered += N[0][jx] * N[1][jy] * N[2][jz];
       }
-  const Real alpha = covered > 0 ? ddmp_partition(f) : Real(1);
+  const Real alpha = covered > 0 ? ddmp_partition(f, partition) : Real(1);
   st.alpha = alpha;
   for (int k = 0; k < 4; ++k) {
     st.w[k] = Axes{};

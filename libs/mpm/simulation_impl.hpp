@@ -64,6 +64,7 @@ struct Simulation::Impl {
       : sim(s), arena(threads > 0 ? threads : tbb::task_arena::automatic) {}
 
   const Settings& settings() const { return sim.settings_; }
+  DdmpPartition ddmp_partition() const { return {settings().ddmp_alpha_peak, settings().ddmp_alpha_exponent}; }
   Particles& particles() { return sim.particles_; }
 
   // --- Buckets and the active grid -------------------------------------------------------
@@ -156,7 +157,7 @@ struct Simulation::Impl {
         for (size_t c = r.begin(); c < r.end(); ++c) {
           const Bucket& b = list[colour[c]];
           buffer.attach(b);
-          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, buffer);
+          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, ddmp_partition(), buffer);
           clear_box(b, buffer);
           scatter_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
                                       settings().cell_size, buffer);
@@ -176,7 +177,7 @@ struct Simulation::Impl {
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
-        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, buffer);
+        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, ddmp_partition(), buffer);
         copy_box_from_grid(b, tables[bi], grid, buffer);
         gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
                                    buffer, tallies[bi], &run_tallies[b.run_begin]);

@@ -76,7 +76,7 @@ Simulation::Gathered Simulation::gather_from_grid() const {
     for (size_t bi = 0; bi < im.buckets.buckets().size(); ++bi) {
       const Bucket& b = im.buckets.buckets()[bi];
       buffer.attach(b);
-      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, settings_.cell_size, buffer);
+      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, settings_.cell_size, im.ddmp_partition(), buffer);
       copy_box_from_grid(b, im.tables[bi], im.grid, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {
         const auto st = particle_stencil<Shape>(copy, p, settings_.cell_size, buffer);

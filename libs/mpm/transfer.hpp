@@ -92,7 +92,8 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
 template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
   if constexpr (has_smoothed_gradient<Shape>::value)
-    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), Gradient);
+    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), buffer.ddmp_alpha,
+                             Gradient);
   else
     return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
 }

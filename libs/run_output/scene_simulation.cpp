@@ -13,6 +13,8 @@ mpm::Settings solver_settings(const Scene& scene, int threads) {
   s.shape_function = mpm::parse_shape_function(to_string(scene.shape), scene.where, "grid.shape");
   s.scheme = mpm::parse_update_scheme(to_string(scene.scheme), scene.where, "grid.scheme");
   s.flip_blend = scene.flip;
+  s.ddmp_alpha_peak = scene.ddmp_alpha_peak;
+  s.ddmp_alpha_exponent = scene.ddmp_alpha_exponent;
   s.cfl = scene.cfl;
   s.fixed_time_step = scene.dt;
   s.mass_scaling = scene.mass_scaling;

@@ -63,6 +63,10 @@ void read_grid(TableReader grid, Scene& s) {
   s.scheme = enum_from(grid.choice("scheme", names_of(all_schemes), remap ? "musl" : "usl"), all_schemes);
   s.flip = grid.number("flip", 0.99);
   if (s.flip < 0 || s.flip > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", 1);
+  if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
+  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", 0.125);
+  if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
   grid.finish();
 }
 

@@ -71,6 +71,8 @@ std::vector<uint32_t> masks(std::mt19937& rng) {
 
 TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to any material boundary", "[mpm][ddmp]") {
   const Real h = GENERATE(1e-3, 0.64e-3, 1.0);
+  // Eq. 8 holds for any partition function: the default and Eq. 5 as printed.
+  const DdmpPartition alpha = GENERATE(DdmpPartition{}, ddmp_eq5_partition);
   std::mt19937 rng(11);
   std::uniform_real_distribution<Real> u(-20, 20);
   std::uniform_int_distribution<int> snap(0, 2);
@@ -83,7 +85,7 @@ TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to any material boundar
         if (mode == 2) x[a] = std::round(x[a]) + 1e-12;
       }
       x *= h;
-      const DdmpStencil st = make_ddmp_stencil(x, 1 / h, mask);
+      const DdmpStencil st = make_ddmp_stencil(x, 1 / h, mask, alpha);
       const Sums s = sums_of(st, h);
       INFO("x/h = " << (x / h).transpose() << ", mask " << mask << ", h " << h);
       CHECK(s.weight == Approx(1).margin(1e-13));
@@ -165,16 +167,29 @@ TEST_CASE("DDMP's smoothed gradient matches Eq. 7 integrated by Gauss quadrature
 }
 
 TEST_CASE("DDMP's partition function vanishes on cell faces and peaks at the centre", "[mpm][ddmp]") {
-  CHECK(ddmp_partition(Vec3(0, 0.3, 0.7)) == 0);
-  CHECK(ddmp_partition(Vec3(0.2, 1 - 1e-16, 0.5)) < 1e-2);
-  const Real centre = ddmp_partition(Vec3::Constant(0.5));
-  // ½ (2⁸ · (1/4)¹²)^(1/14) = ½ · 2^(−16/14)
-  CHECK(centre == Approx(0.5 * std::pow(2.0, -16.0 / 14.0)).epsilon(1e-14));
+  const DdmpPartition alpha = GENERATE(DdmpPartition{}, DdmpPartition{0.5, 0.3}, ddmp_eq5_partition);
+  CHECK(ddmp_partition(Vec3(0, 0.3, 0.7), alpha) == 0);
+  CHECK(ddmp_partition(Vec3(0.2, 1 - 1e-16, 0.5), alpha) < 0.02);
+  CHECK(ddmp_partition(Vec3::Constant(0.5), alpha) == Approx(alpha.peak).epsilon(1e-14));
   std::mt19937 rng(1);
   std::uniform_real_distribution<Real> u(1e-6, 1 - 1e-6);
   for (int n = 0; n < 1000; ++n) {
-    const Real a = ddmp_partition(Vec3(u(rng), u(rng), u(rng)));
+    const Real a = ddmp_partition(Vec3(u(rng), u(rng), u(rng)), alpha);
     CHECK(a > 0);
-    CHECK(a <= centre * (1 + 1e-14));
+    CHECK(a <= alpha.peak * (1 + 1e-14));
   }
+}
+
+TEST_CASE("Eq. 5 as printed is the partition function with peak 0.227 and exponent 2/7", "[mpm][ddmp]") {
+  // Independent: ½ {Π_{j=1..8} 2 S_j(x)}^{3/(2 (8 − 1) 3)} over the cell's 8 corners.
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (int n = 0; n < 200; ++n) {
+    const Vec3 f(u(rng), u(rng), u(rng));
+    Real product = 1;
+    for (int j = 0; j < 8; ++j)
+      product *= 2 * ((j & 4) ? f[0] : 1 - f[0]) * ((j & 2) ? f[1] : 1 - f[1]) * ((j & 1) ? f[2] : 1 - f[2]);
+    CHECK(ddmp_partition(f, ddmp_eq5_partition) == Approx(0.5 * std::pow(product, 1.0 / 14)).epsilon(1e-12));
+  }
+  CHECK(ddmp_eq5_partition.peak == Approx(0.5 * std::pow(2.0, -16.0 / 14.0)).epsilon(1e-14));
 }
