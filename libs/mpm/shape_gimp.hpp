@@ -37,6 +37,7 @@ struct UgimpShape {
   static constexpr bool uses_half_size = true;
   static constexpr bool stretches_with_f = false;
   static constexpr Real max_half = 0.5;  // cell units
+  static constexpr bool trims_zero_planes = true;  // S2 = S2' = 0 while e = 0 (stencil.hpp)
 
   // The integrals in closed form for a domain no wider than a cell, without branches (the
   // hot path): with the domain [a, b] relative to the first node, a ∈ [0, 1), b = a + 2l < 2,

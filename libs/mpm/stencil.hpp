@@ -8,6 +8,8 @@
 // Shape policies write their 1D formulas once, as templates over the number type T: plain
 // Real (tests, reference) or Axes (x, y, z and one spare lane), with the helpers of simd.hpp.
 #pragma once
+#include <type_traits>
+
 #include "mpm/real.hpp"
 #include "mpm/simd.hpp"
 
@@ -39,5 +41,56 @@ inline Stencil<Shape::nodes_per_axis> make_stencil(const Vec3& x, const Vec3& ha
   for (int k = 0; k < N; ++k) s.dw[k] *= inv_h;
   return s;
 }
+
+// A stencil with its trailing node planes of zero weight cut off, per axis. GIMP's outer
+// nodes carry weight only while the particle domain overhangs the node before them: uGIMP's
+// third node per axis is exactly zero whenever e = 0 (shape_gimp.hpp), half of all positions
+// with two points per cell, so on average 2.5³ ≈ 15.6 of the 27 nodes carry weight. The
+// node loops stop at count[a]; the planes left out have S = S' = 0 exactly, so they would
+// only add exact zeros (results are bit-identical either way).
+template <int N>
+struct TrimmedStencil : Stencil<N> {
+  int count[3];  // nodes per axis up to the last one with a non-zero weight or derivative
+};
+
+template <int N>
+inline TrimmedStencil<N> trim_zero_planes(const Stencil<N>& s) {
+  TrimmedStencil<N> t;
+  static_cast<Stencil<N>&>(t) = s;
+  using Mask = decltype(s.w[0] == s.w[0]);  // per axis −1 (true) or 0
+  Mask zero_tail = ~Mask{};
+  Mask count = Mask{} + N;
+  for (int k = N - 1; k >= 2; --k) {  // a trimmed plane adds −1; two nodes always stay
+    zero_tail &= (s.w[k] == 0) & (s.dw[k] == 0);
+    count += zero_tail;
+  }
+  for (int a = 0; a < 3; ++a) t.count[a] = int(count[a]);
+  return t;
+}
+
+// Calls f(std::integral_constant<int, n>()) for 2 ≤ n ≤ N.
+template <int N, class F>
+[[gnu::always_inline]] inline void with_trip_count(int n, F&& f) {
+  if constexpr (N > 2)
+    if (n < N) return with_trip_count<N - 1>(n, f);
+  f(std::integral_constant<int, N>());
+}
+
+// Nodes along axis a the node loops visit: all N of a plain stencil (a compile-time
+// constant: fixed trip counts), count[a] of a trimmed one.
+template <int N>
+constexpr int nodes_along(const Stencil<N>&, int) { return N; }
+template <int N>
+inline int nodes_along(const TrimmedStencil<N>& s, int a) {
+  return s.count[a];
+}
+
+// Shape policies whose outer nodes are often exactly zero declare
+// `static constexpr bool trims_zero_planes = true;` and get TrimmedStencils.
+template <class Shape, class = void>
+struct trims_zero_planes : std::false_type {};
+template <class Shape>
+struct trims_zero_planes<Shape, std::void_t<decltype(Shape::trims_zero_planes)>>
+    : std::bool_constant<Shape::trims_zero_planes> {};
 
 }  // namespace latmpm::mpm

@@ -94,6 +94,8 @@ inline auto particle_stencil(const Particles& ps, size_t p, Real h, const Bucket
   if constexpr (has_smoothed_gradient<Shape>::value)
     return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), buffer.ddmp_alpha,
                              Gradient);
+  else if constexpr (trims_zero_planes<Shape>::value)
+    return trim_zero_planes(make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h));
   else
     return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
 }
@@ -149,19 +151,26 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
         fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
       }
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j) {
+      // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
+      // (with_trip_count; a run-time bound there changed the rounding of the results).
+      const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
+      for (int i = 0; i < ni; ++i)
+        for (int j = 0; j < nj; ++j) {
           Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
           const Real wij = st.w[i][0] * st.w[j][1];
           if constexpr (Mode::force) {
             // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
             const NodeLanes row_w = wij * a + (st.dw[i][0] * st.w[j][1]) * fx + (st.w[i][0] * st.dw[j][1]) * fy;
             const NodeLanes row_d = wij * fz;
-            for (int k = 0; k < N; ++k)
-              store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
+            with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+              for (int k = 0; k < nk; ++k)
+                store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
+            });
           } else {
             const NodeLanes row_w = wij * a;
-            for (int k = 0; k < N; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
+            with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+              for (int k = 0; k < nk; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
+            });
           }
         }
       if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
@@ -185,15 +194,17 @@ struct Interpolation {
   NodeLanes aw, ax, ay, az;
 };
 
+// The sums over the first ni × nj × nk nodes of the stencil.
 template <bool Gradient, int N>
-[[gnu::always_inline]] inline Interpolation interpolate(const Stencil<N>& st, const BucketBuffer& buffer) {
+[[gnu::always_inline]] inline Interpolation interpolate_box(const Stencil<N>& st, const BucketBuffer& buffer, int ni,
+                                                            int nj, int nk) {
   const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
   Interpolation out{};
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) {
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < nj; ++j) {
       const Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
       NodeLanes rw{}, rd{};
-      for (int k = 0; k < N; ++k) {
+      for (int k = 0; k < nk; ++k) {
         const NodeLanes node = load_lanes(row + k * lane::count);
         rw += st.w[k][2] * node;
         if constexpr (Gradient) rd += st.dw[k][2] * node;
@@ -207,6 +218,17 @@ template <bool Gradient, int N>
       }
     }
   return out;
+}
+
+template <bool Gradient, int N>
+[[gnu::always_inline]] inline Interpolation interpolate(const Stencil<N>& st, const BucketBuffer& buffer) {
+  return interpolate_box<Gradient>(st, buffer, N, N, N);
+}
+
+// A trimmed stencil: only the nodes that carry weight (stencil.hpp).
+template <bool Gradient, int N>
+[[gnu::always_inline]] inline Interpolation interpolate(const TrimmedStencil<N>& st, const BucketBuffer& buffer) {
+  return interpolate_box<Gradient>(st, buffer, st.count[0], st.count[1], st.count[2]);
 }
 
 // DDMP: the tensor-product part (S, α∇S), then the smoothed gradient node by node.
