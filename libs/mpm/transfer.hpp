@@ -228,7 +228,14 @@ template <bool Gradient, int N>
 // A trimmed stencil: only the nodes that carry weight (stencil.hpp).
 template <bool Gradient, int N>
 [[gnu::always_inline]] inline Interpolation interpolate(const TrimmedStencil<N>& st, const BucketBuffer& buffer) {
-  return interpolate_box<Gradient>(st, buffer, st.count[0], st.count[1], st.count[2]);
+  Interpolation out;
+  with_trip_count<N>(st.count[0], [&](auto ni) __attribute__((always_inline)) {
+    with_trip_count<N>(st.count[1], [&](auto nj) __attribute__((always_inline)) {
+      with_trip_count<N>(st.count[2], [&](auto nk)
+                             __attribute__((always_inline)) { out = interpolate_box<Gradient>(st, buffer, ni, nj, nk); });
+    });
+  });
+  return out;
 }
 
 // DDMP: the tensor-product part (S, α∇S), then the smoothed gradient node by node.
