@@ -277,7 +277,7 @@ void Simulation::advance(Real dt) {
   auto& im = *impl_;
   const Real stable = im.stable_time_step();
   im.arena.execute([&] {
-    with_shape_function(settings_.shape_function, [&](auto shape) {
+    im.with_solver_shape([&](auto shape) {
       using Shape = decltype(shape);
       switch (settings_.scheme) {
         case UpdateScheme::usl: im.step_usl<Shape>(dt); break;
