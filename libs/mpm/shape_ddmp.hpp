@@ -33,7 +33,9 @@
 // The stencil is the tensor-product Stencil<4> of the other shape functions — weights
 // S (zero on the outer nodes) and derivatives α ∇S — plus the non-separable smoothed part
 // (1 − α) Σ_j ..., one vector per stencil node; transfer.hpp adds it where the shape says
-// `smoothed_gradient`.
+// `smoothed_gradient`. That per-particle form is the reference; runs by default use
+// DdmpGridShape (below, Settings::ddmp_on_grid): the same sums regrouped as Paper A's Eq. 4
+// on the grid (ddmp_grid.hpp), with only the cell's 8 nodes per particle.
 #pragma once
 #include <array>
 #include <cmath>

@@ -366,7 +366,12 @@ void Simulation::finish_step(Real dt, Real stable) {
 }
 
 size_t Simulation::active_grid_blocks() const { return impl_->grid.block_count(); }
-size_t Simulation::grid_memory_bytes() const { return impl_->grid.memory_bytes(); }
+size_t Simulation::grid_memory_bytes() const {
+  // DDMP on the grid: its nodal σ^d / L and per-block tables beside the lanes (ddmp_grid.hpp).
+  const DdmpNodalValues& d = impl_->ddmp_nodal;
+  return impl_->grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
+         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.omega.capacity();
+}
 
 size_t Simulation::particle_memory_bytes() const {
   const Particles& p = particles_;
