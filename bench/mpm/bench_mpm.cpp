@@ -1,6 +1,6 @@
 // Solver throughput: particle-updates per second (particles × steps / wall seconds) of the
 // explicit MPM step on an elastic block, per shape function and thread count.
-//   bench_mpm [--cells N] [--steps S] [--threads T] [--shape NAME] [--scheme NAME]
+//   bench_mpm [--cells N] [--steps S] [--threads T] [--shape NAME] [--scheme NAME] [--ddmp-on-grid 0|1]
 // Prints one line per run; bench/mpm/run.sh runs the set recorded in docs/benchmarks.md.
 #include <chrono>
 #include <ctime>
@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   int cells = 40, steps = 20, threads = 0;
   std::vector<std::string> shapes = {"linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp"};
   std::string scheme = "usl";
+  bool ddmp_on_grid = true;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--cells") cells = std::atoi(value.c_str());
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
     else if (key == "--threads") threads = std::atoi(value.c_str());
     else if (key == "--shape") shapes = {value};
     else if (key == "--scheme") scheme = value;
+    else if (key == "--ddmp-on-grid") ddmp_on_grid = value != "0";
     else {
       std::fprintf(stderr, "bench_mpm: unknown option %s\n", key.c_str());
       return 1;
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
     s.shape_function = parse_shape_function(shape);
     s.scheme = parse_update_scheme(scheme);
     s.threads = threads;
+    s.ddmp_on_grid = ddmp_on_grid;
     BodySettings body;
     body.name = "block";
     body.material.young_modulus = 10e6;

@@ -28,6 +28,8 @@ struct BucketBuffer {
   // node, same indexing as the nodes without lanes) that holds deformable material.
   std::vector<uint8_t> occupied;
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
+  // DDMP on the grid only (ddmp_grid.hpp): 9 nodal values per node, allocated on first use.
+  std::vector<Real> ddmp;
 
   void attach(const Bucket& b) {
     for (int a = 0; a < 3; ++a) origin[a] = ParticleBuckets::cells * b.coord[a] + ParticleBuckets::buffer_lo;
@@ -35,6 +37,10 @@ struct BucketBuffer {
   // Offset (in Reals) of the node with grid coordinates (i, j, k).
   int offset(int i, int j, int k) const {
     return (i - origin[0]) * stride_i + (j - origin[1]) * stride_j + (k - origin[2]) * lane::count;
+  }
+  // Offset of the node's first value in `ddmp` (9 values per node).
+  int ddmp_offset(int i, int j, int k) const {
+    return (((i - origin[0]) * width + (j - origin[1])) * width + (k - origin[2])) * 9;
   }
 };
 

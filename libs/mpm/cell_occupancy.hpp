@@ -60,18 +60,19 @@ inline void mark_occupied_cells(const ParticleBuckets& buckets, const std::vecto
 }
 
 // Marks the bucket's buffer cells that belong to Ω: at least half filled, Σ V0 ≥ h³/2; and
-// gives the buffer the run's partition function α.
+// gives the buffer the run's partition function α. `widen_below`: cells that many further
+// below the bucket's box (DdmpGridShape's box starts at the particles' own cells).
 inline void fill_occupancy(const Bucket& b, const BlockTable& table, const std::vector<Real>& cell_volume,
-                           Real h, const DdmpPartition& alpha, BucketBuffer& buffer) {
+                           Real h, const DdmpPartition& alpha, BucketBuffer& buffer, int widen_below = 0) {
   buffer.ddmp_alpha = alpha;
   constexpr int w = BucketBuffer::width;
   const Real half_cell = Real(0.5) * h * h * h;
   buffer.occupied.assign(size_t(w) * w * w, 0);
   // Only the bucket's node box (its particles' cells widened by the stencil's reach, which
   // holds every cell a particle's 27-cell neighbourhood can name).
-  for (int gi = b.box_lo[0]; gi <= b.box_hi[0]; ++gi)
-    for (int gj = b.box_lo[1]; gj <= b.box_hi[1]; ++gj)
-      for (int gk = b.box_lo[2]; gk <= b.box_hi[2]; ++gk) {
+  for (int gi = b.box_lo[0] - widen_below; gi <= b.box_hi[0]; ++gi)
+    for (int gj = b.box_lo[1] - widen_below; gj <= b.box_hi[1]; ++gj)
+      for (int gk = b.box_lo[2] - widen_below; gk <= b.box_hi[2]; ++gk) {
         const int i = gi - buffer.origin[0], j = gj - buffer.origin[1], k = gk - buffer.origin[2];
         const int block = table[size_t(occupancy_detail::table_index(b, gi, gj, gk))];
         if (block >= 0)

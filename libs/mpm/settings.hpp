@@ -30,6 +30,10 @@ struct Settings {
   // Eq. 5 in 3D is peak 0.227, exponent 2/7.
   Real ddmp_alpha_peak = 1;          // in (0, 1]
   Real ddmp_alpha_exponent = 0.125;  // > 0
+  // DDMP's smoothed gradient on the grid (Paper A Eq. 4; ddmp_grid.hpp): nodal σ^d and L
+  // over the cells of Ω instead of a dense 4×4×4 gradient per particle. Same results to
+  // round-off; false keeps the per-particle evaluation (the reference in tests/mpm).
+  bool ddmp_on_grid = true;
 
   // Time step: automatic, dt = cfl · h / max_p(c_p + |v_p|), c_p the dilatational wave
   // speed of the particle's material (at its current J), re-evaluated every step.

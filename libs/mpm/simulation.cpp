@@ -277,7 +277,7 @@ void Simulation::advance(Real dt) {
   auto& im = *impl_;
   const Real stable = im.stable_time_step();
   im.arena.execute([&] {
-    with_shape_function(settings_.shape_function, [&](auto shape) {
+    im.with_solver_shape([&](auto shape) {
       using Shape = decltype(shape);
       switch (settings_.scheme) {
         case UpdateScheme::usl: im.step_usl<Shape>(dt); break;
@@ -366,7 +366,12 @@ void Simulation::finish_step(Real dt, Real stable) {
 }
 
 size_t Simulation::active_grid_blocks() const { return impl_->grid.block_count(); }
-size_t Simulation::grid_memory_bytes() const { return impl_->grid.memory_bytes(); }
+size_t Simulation::grid_memory_bytes() const {
+  // DDMP on the grid: its nodal σ^d / L and per-block tables beside the lanes (ddmp_grid.hpp).
+  const DdmpNodalValues& d = impl_->ddmp_nodal;
+  return impl_->grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
+         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.omega.capacity();
+}
 
 size_t Simulation::particle_memory_bytes() const {
   const Particles& p = particles_;

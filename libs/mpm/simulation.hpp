@@ -13,6 +13,7 @@
 // or runaway kinetic energy. The state stays readable after the throw, so a caller can save
 // what it has.
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -101,6 +102,12 @@ class Simulation {
     std::vector<Mat3> velocity_gradient;
   };
   Gathered gather_from_grid() const;
+  // Every node of the active grid with its 8 lanes (sparse_grid.hpp), block by block.
+  struct GridNode {
+    std::array<int, 3> index;
+    std::array<Real, 8> lanes;
+  };
+  std::vector<GridNode> grid_nodes() const;
   // Checkpoints (simulation_state.cpp): everything a continued run needs to give the same
   // results bit for bit — particles in their internal order with their buckets, time, step,
   // diagnostics and accumulated work, rigid-body state, the carried stable-step inputs —

@@ -13,9 +13,11 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "mpm/ddmp_grid.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/particle_buckets.hpp"
 #include "mpm/rigid_contact.hpp"
+#include "mpm/shape_functions.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/sparse_grid.hpp"
 #include "mpm/transfer.hpp"
@@ -53,6 +55,7 @@ struct Simulation::Impl {
   std::vector<Vec3> initial_centre;  // per body, m
   Reactions reactions;
   std::vector<Real> occupancy;  // DDMP: deformable volume per cell (cell_occupancy.hpp)
+  DdmpNodalValues ddmp_nodal;   // DDMP on the grid: σ^d and L per node (ddmp_grid.hpp)
   std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
   // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
   bool penalty_contact = false;
@@ -66,6 +69,20 @@ struct Simulation::Impl {
   const Settings& settings() const { return sim.settings_; }
   DdmpPartition ddmp_partition() const { return {settings().ddmp_alpha_peak, settings().ddmp_alpha_exponent}; }
   Particles& particles() { return sim.particles_; }
+
+  // Calls f(Shape{}) with the policy the run uses: the settings' shape function, DDMP with
+  // its smoothed part on the grid (DdmpGridShape) unless Settings::ddmp_on_grid is off.
+  template <class F>
+  void with_solver_shape(F&& f) {
+    with_shape_function(settings().shape_function, [&](auto shape) {
+      if constexpr (std::is_same_v<decltype(shape), DdmpShape>)
+        if (settings().ddmp_on_grid) return f(DdmpGridShape{});
+      return f(shape);
+    });
+  }
+  // Ω's cells one further below the bucket's box than the stencil reaches (cell_occupancy.hpp).
+  template <class Shape>
+  static constexpr int occupancy_widening = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
 
   // --- Buckets and the active grid -------------------------------------------------------
 
@@ -124,6 +141,8 @@ struct Simulation::Impl {
       for (const auto& b : body_info) deformable.push_back(b.role == BodyRole::deformable);
       mark_occupied_cells(buckets, tables, particles(), deformable, settings().cell_size, occupancy,
                           grid.block_count());
+      if constexpr (has_grid_smoothed_gradient<Shape>::value)
+        prepare_ddmp_nodal_values(grid, occupancy, settings().cell_size, ddmp_nodal);
     }
     clear_grid(grid);
     grid_holds_velocity = false;
@@ -150,6 +169,8 @@ struct Simulation::Impl {
   template <class Shape, class Mode>
   void scatter() {
     const auto& list = buckets.buckets();
+    constexpr bool nodal_stress = Mode::force && has_grid_smoothed_gradient<Shape>::value;
+    if constexpr (nodal_stress) clear_ddmp_nodal_values(ddmp_nodal);
     for (const auto& colour : buckets.colours()) {
       // Buckets of one colour are two buckets apart: their boxes never overlap.
       tbb::parallel_for(tbb::blocked_range<size_t>(0, colour.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
@@ -157,13 +178,19 @@ struct Simulation::Impl {
         for (size_t c = r.begin(); c < r.end(); ++c) {
           const Bucket& b = list[colour[c]];
           buffer.attach(b);
-          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, ddmp_partition(), buffer);
+          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, ddmp_partition(), buffer, occupancy_widening<Shape>);
           clear_box(b, buffer);
+          if constexpr (nodal_stress) clear_ddmp_box(b, tables[colour[c]], buffer);
           scatter_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
                                       settings().cell_size, buffer);
           add_box_to_grid(b, tables[colour[c]], grid, buffer);
+          if constexpr (nodal_stress) add_ddmp_box_to_grid(b, tables[colour[c]], buffer, ddmp_nodal);
         }
       });
+    }
+    if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
+      ddmp_nodal_stress(grid, settings().cell_size, ddmp_nodal);
+      add_ddmp_smoothed_force(grid, ddmp_nodal);
     }
   }
 
@@ -172,13 +199,16 @@ struct Simulation::Impl {
     const auto& list = buckets.buckets();
     const GatherParameters parameters{settings().cell_size, dt, settings().flip_blend, settings().gravity,
                                       settings().min_jacobian};
+    constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && has_grid_smoothed_gradient<Shape>::value;
+    if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(grid, Mode::gradient_lane, settings().cell_size, ddmp_nodal);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       BucketBuffer& buffer = buffers.local();
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
-        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, ddmp_partition(), buffer);
+        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, ddmp_partition(), buffer, occupancy_widening<Shape>);
         copy_box_from_grid(b, tables[bi], grid, buffer);
+        if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, tables[bi], ddmp_nodal, buffer);
         gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
                                    buffer, tallies[bi], &run_tallies[b.run_begin]);
       }

@@ -9,7 +9,7 @@ void Simulation::stage_particles_to_grid() {
   auto& im = *impl_;
   im.needs_sort = true;  // positions may have been set from outside
   im.arena.execute([&] {
-    with_shape_function(settings_.shape_function, [&](auto shape) {
+    im.with_solver_shape([&](auto shape) {
       using Shape = decltype(shape);
       im.prepare_grid<Shape>();
       im.scatter<Shape, ScatterAll>();
@@ -20,7 +20,7 @@ void Simulation::stage_particles_to_grid() {
 void Simulation::stage_grid_update(Real dt) {
   auto& im = *impl_;
   im.arena.execute([&] {
-    with_shape_function(settings_.shape_function, [&](auto shape) { im.add_contact_forces<decltype(shape)>(); });
+    im.with_solver_shape([&](auto shape) { im.add_contact_forces<decltype(shape)>(); });
     im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
     im.couple_rigid(dt);
   });
@@ -46,7 +46,7 @@ void Simulation::stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>&
 void Simulation::stage_grid_to_particles(Real dt) {
   auto& im = *impl_;
   im.arena.execute([&] {
-    with_shape_function(settings_.shape_function, [&](auto shape) { im.gather<decltype(shape), GatherAll>(dt); });
+    im.with_solver_shape([&](auto shape) { im.gather<decltype(shape), GatherAll>(dt); });
   });
 }
 
@@ -70,14 +70,18 @@ Simulation::Gathered Simulation::gather_from_grid() const {
   out.velocity.resize(copy.size());
   out.velocity_gradient.resize(copy.size());
   BucketBuffer buffer;
-  with_shape_function(settings_.shape_function, [&](auto shape) {
+  im.with_solver_shape([&](auto shape) {
     using Shape = decltype(shape);
     constexpr int N = Shape::nodes_per_axis;
+    constexpr bool nodal_gradient = has_grid_smoothed_gradient<Shape>::value;
+    if constexpr (nodal_gradient)
+      ddmp_nodal_velocity_gradient(im.grid, lane::momentum, settings_.cell_size, im.ddmp_nodal);
     for (size_t bi = 0; bi < im.buckets.buckets().size(); ++bi) {
       const Bucket& b = im.buckets.buckets()[bi];
       buffer.attach(b);
-      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, settings_.cell_size, im.ddmp_partition(), buffer);
+      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, settings_.cell_size, im.ddmp_partition(), buffer, im.occupancy_widening<Shape>);
       copy_box_from_grid(b, im.tables[bi], im.grid, buffer);
+      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, im.tables[bi], im.ddmp_nodal, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {
         const auto st = particle_stencil<Shape>(copy, p, settings_.cell_size, buffer);
         Vec3 v = Vec3::Zero();
@@ -93,7 +97,14 @@ Simulation::Gathered Simulation::gather_from_grid() const {
               v += w * vi;
               grad += vi * dw.transpose();
             }
-        if constexpr (has_smoothed_gradient<Shape>::value)
+        if constexpr (nodal_gradient) {
+          for (int l = 0; l < 8; ++l) {
+            const Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2), st.base[1] + ((l >> 1) & 1),
+                                                                       st.base[2] + (l & 1));
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < 3; ++c) grad(r, c) += st.corner[l] * node[r * 3 + c];
+          }
+        } else if constexpr (has_smoothed_gradient<Shape>::value)
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
               for (int k = 0; k < N; ++k) {
@@ -106,6 +117,25 @@ Simulation::Gathered Simulation::gather_from_grid() const {
       }
     }
   });
+  return out;
+}
+
+std::vector<Simulation::GridNode> Simulation::grid_nodes() const {
+  const auto& g = impl_->grid;
+  constexpr int bw = SparseGrid::block_width;
+  std::vector<GridNode> out;
+  for (size_t b = 0; b < g.block_count(); ++b) {
+    const auto c = g.coord(b);
+    for (int i = 0; i < bw; ++i)
+      for (int j = 0; j < bw; ++j)
+        for (int k = 0; k < bw; ++k) {
+          GridNode n;
+          n.index = {c[0] * bw + i, c[1] * bw + j, c[2] * bw + k};
+          const Real* lanes = g.block(b) + SparseGrid::node_offset(i, j, k);
+          for (int l = 0; l < lane::count; ++l) n.lanes[size_t(l)] = lanes[l];
+          out.push_back(n);
+        }
+  }
   return out;
 }
 

@@ -91,7 +91,10 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
 // Gradient = false: the pass needs weights only (DDMP then skips its smoothed part).
 template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
-  if constexpr (has_smoothed_gradient<Shape>::value)
+  if constexpr (has_grid_smoothed_gradient<Shape>::value)
+    return make_ddmp_corner_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h),
+                                    buffer.ddmp_alpha);
+  else if constexpr (has_smoothed_gradient<Shape>::value)
     return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), buffer.ddmp_alpha,
                              Gradient);
   else if constexpr (trims_zero_planes<Shape>::value)
@@ -173,7 +176,18 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
             });
           }
         }
-      if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
+      if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
+        // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
+        const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
+        const SymTensor& s = ps.stress[p];
+        for (int l = 0; l < 8; ++l) {
+          const Real c = st.corner[l] * v;
+          if (c == 0) continue;
+          Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2), st.base[1] + ((l >> 1) & 1),
+                                                               st.base[2] + (l & 1));
+          for (int k = 0; k < 6; ++k) node[k] += c * s[k];
+        }
+      } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
         // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
         for (int i = 0; i < N; ++i)
           for (int j = 0; j < N; ++j)
@@ -360,6 +374,18 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   grad_v[a][1][q] = ay[Mode::gradient_lane + a];
                   grad_v[a][2][q] = az[Mode::gradient_lane + a];
                 }
+              }
+              if constexpr (gradient && has_grid_smoothed_gradient<Shape>::value) {
+                // DDMP on the grid: + (1 − α) Σ_j S̃_j L_j, the nodal L of ddmp_grid.hpp.
+                Real L[9] = {};
+                for (int l = 0; l < 8; ++l) {
+                  const Real c = st.corner[l];
+                  const Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2),
+                                                                             st.base[1] + ((l >> 1) & 1), st.base[2] + (l & 1));
+                  for (int k = 0; k < 9; ++k) L[k] += c * node[k];
+                }
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
               }
             }
             // 2. Update the group's particles together, one per lane.

@@ -15,6 +15,7 @@ mpm::Settings solver_settings(const Scene& scene, int threads) {
   s.flip_blend = scene.flip;
   s.ddmp_alpha_peak = scene.ddmp_alpha_peak;
   s.ddmp_alpha_exponent = scene.ddmp_alpha_exponent;
+  s.ddmp_on_grid = scene.ddmp_on_grid;
   s.cfl = scene.cfl;
   s.fixed_time_step = scene.dt;
   s.mass_scaling = scene.mass_scaling;

@@ -90,6 +90,7 @@ struct Scene {
   double flip = 0.99;  // FLIP fraction of the velocity update (1 = pure FLIP, 0 = PIC)
   double ddmp_alpha_peak = 1;          // DDMP partition function α: value at the cell centre
   double ddmp_alpha_exponent = 0.125;  // and per-axis exponent (mpm::Settings)
+  bool ddmp_on_grid = true;            // DDMP's smoothed gradient on the grid (mpm::Settings)
 
   double cfl = 0.3;      // used when dt == 0
   double dt = 0;         // s, fixed step when > 0

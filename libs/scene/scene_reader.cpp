@@ -67,6 +67,7 @@ void read_grid(TableReader grid, Scene& s) {
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
   s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", 0.125);
   if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
+  s.ddmp_on_grid = grid.boolean("ddmp_on_grid", true);
   grid.finish();
 }
 

@@ -193,3 +193,17 @@ TEST_CASE("Eq. 5 as printed is the partition function with peak 0.227 and expone
   }
   CHECK(ddmp_eq5_partition.peak == Approx(0.5 * std::pow(2.0, -16.0 / 14.0)).epsilon(1e-14));
 }
+
+TEST_CASE("DDMP's partition function by square roots equals the power it stands for", "[mpm][ddmp]") {
+  // Exponents 1/2^k take k square roots instead of pow (shape_ddmp.hpp); others pow.
+  const Real exponent = GENERATE(0.5, 0.25, 0.125, 0.0625, 0.3, 2.0 / 7);
+  const DdmpPartition alpha{0.9, exponent};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<Real> u(0, 1);
+  for (int n = 0; n < 200; ++n) {
+    const Vec3 f(u(rng), u(rng), u(rng));
+    Real p = 1;
+    for (int a = 0; a < 3; ++a) p *= 4 * f[a] * (1 - f[a]);
+    CHECK(ddmp_partition(f, alpha) == Approx(0.9 * std::pow(p, exponent)).epsilon(1e-14));
+  }
+}
