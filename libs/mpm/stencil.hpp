@@ -68,7 +68,8 @@ inline TrimmedStencil<N> trim_zero_planes(const Stencil<N>& s) {
   return t;
 }
 
-// Calls f(std::integral_constant<int, n>()) for 2 ≤ n ≤ N.
+// Calls f(std::integral_constant<int, n>()) for 2 ≤ n ≤ N: a node loop bounded by a count
+// becomes one of N − 1 loops with a fixed trip count (unrolled by the compiler).
 template <int N, class F>
 [[gnu::always_inline]] inline void with_trip_count(int n, F&& f) {
   if constexpr (N > 2)

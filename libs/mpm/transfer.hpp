@@ -239,7 +239,9 @@ template <bool Gradient, int N>
   return interpolate_box<Gradient>(st, buffer, N, N, N);
 }
 
-// A trimmed stencil: only the nodes that carry weight (stencil.hpp).
+// A trimmed stencil: only the nodes that carry weight (stencil.hpp), each of the (N − 1)³
+// count combinations with fixed trip counts, unrolled like the full stencil's loops (faster
+// than run-time bounds, and the same rounding).
 template <bool Gradient, int N>
 [[gnu::always_inline]] inline Interpolation interpolate(const TrimmedStencil<N>& st, const BucketBuffer& buffer) {
   Interpolation out;
