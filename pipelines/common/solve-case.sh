@@ -19,7 +19,7 @@ rm -f "$run_dir/wall_time.txt"
 # (the scene, the point files) newer than the checkpoint.
 resumable() {
   [ -f "$run_dir/checkpoint.h5" ] && cmp -s "$run_dir.args" "$run_dir/args.used" || return 1
-  ! grep -q '\] status: finished' "$run_dir/log.txt" 2>/dev/null || return 1
+  ! grep -qE '\] status: (finished|failed)' "$run_dir/log.txt" 2>/dev/null || return 1
   local word file
   for word in "${args[@]}"; do
     file=${word#*=}
