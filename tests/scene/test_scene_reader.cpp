@@ -10,29 +10,15 @@
 #include "core/hdf5_file.hpp"
 #include "points/point_set.hpp"
 #include "scene/scene.hpp"
+#include "scratch_points.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
 
 namespace {
 
-// A scratch directory holding one (empty-bodied) point file the scenes can name.
 std::string scratch_dir() {
-  static const std::string dir = [] {
-    fs::path d = fs::temp_directory_path() / ("latmpm-scene-test-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    PointSet p;
-    p.position = {{0, 0, 0}};
-    p.volume = {1e-9};
-    p.body = {0};
-    p.half_size = {{5e-4, 5e-4, 5e-4}};
-    p.body_names = {"column"};
-    p.cell_size = 1e-3;
-    p.ppc = 1;
-    Hdf5File f((d / "pts.h5").string(), Hdf5File::Mode::create);
-    write_point_set(f, p);
-    return d.string();
-  }();
+  static const std::string dir = test::scratch_points_dir("latmpm-scene-test-");
   return dir;
 }
 
