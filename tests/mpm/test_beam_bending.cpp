@@ -6,12 +6,15 @@
 // enter: one cell wide (a slab), t cells thick, bent in z.
 //
 // Measured (docs/solver.md, "DDMP in bending"): uGIMP is within 0.4 % of the reference at 4
-// cells across; DDMP's smoothed gradient (a two-cell-wide nodal average, Eq. 7) makes the
-// beam softer: the period is ~11 % long at 4 cells across (stiffness −19 %), ~2.6 % at 8,
-// ~1.4 % at 12 — a resolution limit converging about as h², not a defect of Eq. 7.
+// cells across; DDMP's smoothed gradient reads the outer fibres' strain inside the surface,
+// so its beam is slightly softer (period 1.3 % long at 4 cells across, 0.3 % at 8) — a
+// resolution limit. A second test bends the beam across cells, where Eq. 5's partition
+// function let DDMP lose its bending mode into hourglass modes (test_ddmp_modes.cpp).
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "mpm/shape_ddmp.hpp"
 #include "mpm/simulation.hpp"
@@ -40,34 +43,65 @@ Real reference_period(Real t, Real length) {
   return 2 * M_PI / (omega * (1 - 0.5 * beta * beta * r2 * shear));
 }
 
-// Measured period / reference period for a beam `across` cells thick, L = slenderness · t.
-// The initial velocity is the mode shape (small: v0 = 1 mm/s, strain ~1e-5); the modal
-// momentum Σ m_p v_z φ(x_p) ∝ cos ωt crosses zero half a period apart.
-Real bending_period_ratio(ShapeFunctionKind shape, int across, int slenderness) {
-  const Real h = 1e-3, t = across * h, length = slenderness * t, v0 = 1e-3;
-  PointSet points = empty_point_set(h, 2);
-  add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(length, h, t), "beam");
-  Settings s;
-  s.cell_size = h;
-  s.shape_function = shape;
-  s.scheme = scheme_for(shape);
-  s.threads = 2;
-  Simulation sim(points, {deformable("beam", elastic(young, 0, density))}, s);
-  for (size_t p = 0; p < sim.particles().size(); ++p)
-    sim.mutable_particles().velocity[p] = Vec3(0, 0, v0 / 2 * mode_shape(sim.particles().position[p][0], length));
-  std::vector<Real> crossings;
-  Real previous_t = 0, previous_q = 1;
-  sim.add_observer([&](const Simulation& sm, const StepDiagnostics& d) {
+// A free–free slab `across` cells thick, L = slenderness · t, one cell wide, 2 points per
+// cell, ν = 0, started in its first bending mode with tip speed v0. It records the zero
+// crossings of the modal momentum Σ m_p v_z φ(x_p) (∝ cos ωt: half a period apart) and the
+// energy (kinetic + strain).
+class FirstModeBeam {
+ public:
+  FirstModeBeam(ShapeFunctionKind shape, int across, int slenderness, Real v0, const DdmpPartition& alpha = {})
+      : t_(across * h_), length_(slenderness * t_) {
+    PointSet points = empty_point_set(h_, 2);
+    add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(length_, h_, t_), "beam");
+    Settings s;
+    s.cell_size = h_;
+    s.shape_function = shape;
+    s.scheme = scheme_for(shape);
+    s.threads = 2;
+    s.ddmp_alpha_peak = alpha.peak;
+    s.ddmp_alpha_exponent = alpha.exponent;
+    sim_ = std::make_unique<Simulation>(points, std::vector<BodySettings>{deformable("beam", elastic(young, 0, density))}, s);
+    for (size_t p = 0; p < sim_->particles().size(); ++p)
+      sim_->mutable_particles().velocity[p] = Vec3(0, 0, v0 / 2 * mode_shape(sim_->particles().position[p][0], length_));
+    sim_->add_observer([this](const Simulation& sm, const StepDiagnostics& d) { observe(sm, d); });
+  }
+  FirstModeBeam(const FirstModeBeam&) = delete;  // the observer holds `this`
+  FirstModeBeam& operator=(const FirstModeBeam&) = delete;
+
+  void run_until(Real time) {
+    while (sim_->time() < time) sim_->step();
+  }
+  void run_until_half_period(Real time_limit) {
+    while (crossings_.size() < 2 && sim_->time() < time_limit) sim_->step();
+  }
+  Real reference() const { return reference_period(t_, length_); }
+  // The first measured half-period × 2 over the reference period (0 if not yet measured).
+  Real period_ratio() const { return crossings_.size() >= 2 ? 2 * (crossings_[1] - crossings_[0]) / reference() : 0; }
+  Real energy_retained() const { return energy_ / initial_energy_; }
+
+ private:
+  void observe(const Simulation& sm, const StepDiagnostics& d) {
     const Particles& ps = sm.particles();
     Real q = 0;
-    for (size_t p = 0; p < ps.size(); ++p) q += ps.mass[p] * ps.velocity[p][2] * mode_shape(ps.position[p][0], length);
-    if ((q > 0) != (previous_q > 0)) crossings.push_back(previous_t + (d.time - previous_t) * previous_q / (previous_q - q));
-    previous_t = d.time, previous_q = q;
-  });
-  const Real period = reference_period(t, length);
-  while (crossings.size() < 2 && sim.time() < 2 * period) sim.step();
-  const Real measured = crossings.size() >= 2 ? 2 * (crossings[1] - crossings[0]) : 0;
-  return measured / period;
+    for (size_t p = 0; p < ps.size(); ++p) q += ps.mass[p] * ps.velocity[p][2] * mode_shape(ps.position[p][0], length_);
+    if ((q > 0) != (previous_q_ > 0))
+      crossings_.push_back(previous_t_ + (d.time - previous_t_) * previous_q_ / (previous_q_ - q));
+    previous_t_ = d.time, previous_q_ = q;
+    energy_ = d.kinetic_energy + d.strain_energy;
+    if (initial_energy_ < 0) initial_energy_ = energy_;
+  }
+
+  const Real h_ = 1e-3, t_, length_;
+  std::unique_ptr<Simulation> sim_;
+  std::vector<Real> crossings_;
+  Real previous_t_ = 0, previous_q_ = 1, initial_energy_ = -1, energy_ = 0;
+};
+
+// Measured period / reference period at small strain (v0 = 1 mm/s, strain ~1e-5).
+Real bending_period_ratio(ShapeFunctionKind shape, int across, int slenderness) {
+  FirstModeBeam beam(shape, across, slenderness, 1e-3);
+  beam.run_until_half_period(2 * beam.reference());
+  return beam.period_ratio();
 }
 }  // namespace
 
@@ -100,36 +134,9 @@ struct LargeDeflection {
 // half-period (zero crossings of the modal momentum, as above) against the linear reference,
 // and the energy (kinetic + strain) left after 1.5 reference periods against the initial one.
 LargeDeflection large_deflection(ShapeFunctionKind shape, Real v0, const DdmpPartition& alpha = {}) {
-  const Real h = 1e-3, t = 4 * h, length = 12 * t;
-  PointSet points = empty_point_set(h, 2);
-  add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(length, h, t), "beam");
-  Settings s;
-  s.cell_size = h;
-  s.shape_function = shape;
-  s.scheme = scheme_for(shape);
-  s.threads = 2;
-  s.ddmp_alpha_peak = alpha.peak;
-  s.ddmp_alpha_exponent = alpha.exponent;
-  Simulation sim(points, {deformable("beam", elastic(young, 0, density))}, s);
-  for (size_t p = 0; p < sim.particles().size(); ++p)
-    sim.mutable_particles().velocity[p] = Vec3(0, 0, v0 / 2 * mode_shape(sim.particles().position[p][0], length));
-  std::vector<Real> crossings;
-  Real previous_t = 0, previous_q = 1, e0 = -1, e = 0;
-  sim.add_observer([&](const Simulation& sm, const StepDiagnostics& d) {
-    const Particles& ps = sm.particles();
-    Real q = 0;
-    for (size_t p = 0; p < ps.size(); ++p) q += ps.mass[p] * ps.velocity[p][2] * mode_shape(ps.position[p][0], length);
-    if ((q > 0) != (previous_q > 0)) crossings.push_back(previous_t + (d.time - previous_t) * previous_q / (previous_q - q));
-    previous_t = d.time, previous_q = q;
-    e = d.kinetic_energy + d.strain_energy;
-    if (e0 < 0) e0 = e;
-  });
-  const Real period = reference_period(t, length);
-  while (sim.time() < 1.5 * period) sim.step();
-  LargeDeflection out;
-  out.half_period_ratio = crossings.size() >= 2 ? 2 * (crossings[1] - crossings[0]) / period : 0;
-  out.energy_retained = e / e0;
-  return out;
+  FirstModeBeam beam(shape, 4, 12, v0, alpha);
+  beam.run_until(1.5 * beam.reference());
+  return {beam.period_ratio(), beam.energy_retained()};
 }
 }  // namespace
 
