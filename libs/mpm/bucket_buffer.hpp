@@ -21,6 +21,7 @@ struct BucketBuffer {
   static constexpr int width = ParticleBuckets::buffer_width;
   static constexpr int stride_j = width * lane::count;
   static constexpr int stride_i = width * stride_j;
+  static constexpr int ddmp_values = 9;  // DDMP on the grid: values per node in `ddmp`
 
   std::vector<Real> data = std::vector<Real>(size_t(width) * width * width * lane::count);
   std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
@@ -28,7 +29,7 @@ struct BucketBuffer {
   // node, same indexing as the nodes without lanes) that holds deformable material.
   std::vector<uint8_t> occupied;
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
-  // DDMP on the grid only (ddmp_grid.hpp): 9 nodal values per node, allocated on first use.
+  // DDMP on the grid only (ddmp_grid.hpp): ddmp_values per node, allocated on first use.
   std::vector<Real> ddmp;
 
   void attach(const Bucket& b) {
@@ -38,9 +39,16 @@ struct BucketBuffer {
   int offset(int i, int j, int k) const {
     return (i - origin[0]) * stride_i + (j - origin[1]) * stride_j + (k - origin[2]) * lane::count;
   }
-  // Offset of the node's first value in `ddmp` (9 values per node).
+  // Offset of the node's first value in `ddmp`.
   int ddmp_offset(int i, int j, int k) const {
-    return (((i - origin[0]) * width + (j - origin[1])) * width + (k - origin[2])) * 9;
+    return (((i - origin[0]) * width + (j - origin[1])) * width + (k - origin[2])) * ddmp_values;
+  }
+  // The `ddmp` values of corner l (bits x, y, z of l) of the cell whose lowest node is `base`.
+  Real* ddmp_corner(const int base[3], int l) {
+    return ddmp.data() + ddmp_offset(base[0] + (l >> 2), base[1] + ((l >> 1) & 1), base[2] + (l & 1));
+  }
+  const Real* ddmp_corner(const int base[3], int l) const {
+    return ddmp.data() + ddmp_offset(base[0] + (l >> 2), base[1] + ((l >> 1) & 1), base[2] + (l & 1));
   }
 };
 

@@ -39,7 +39,7 @@ namespace latmpm::mpm {
 //   ∫_Ω S_j ∇S_i dV = h² Σ_e T and V_j = count_j h³/8;
 //   before G2P: L_j, row-major (9 values).
 struct DdmpNodalValues {
-  static constexpr int count = 9;
+  static constexpr int count = BucketBuffer::ddmp_values;
   std::vector<Real> values;
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
   std::vector<uint8_t> omega;                   // per block, 64 cells (named by their lowest node): in Ω
@@ -100,6 +100,21 @@ inline int omega_cells_around(const CellHalo& cells, int li, int lj, int lk) {
   for (int l = 0; l < 8; ++l) n += cells.in_omega[li + 1 - (l >> 2)][lj + 1 - ((l >> 1) & 1)][lk + 1 - (l & 1)];
   return n;
 }
+
+// 8/(n h) for a node with n Ω cells around it (V_j = n h³/8, and the table's h²), 0 if none.
+inline Real nodal_volume_scale(int n, Real h) { return n > 0 ? Real(8) / (Real(n) * h) : Real(0); }
+
+// For node (li, lj, lk) of the block: fn(self, other, x, y, z) for each Ω cell e around it,
+// the node being corner `self` of e, and each corner `other` of e at halo index (x, y, z)
+// (NodeHalo's indexing); the pair's cell integral is T[self][other] or T[other][self].
+template <class Fn>
+[[gnu::always_inline]] inline void for_each_omega_corner_pair(const CellHalo& cells, int li, int lj, int lk, Fn&& fn) {
+  for (int self = 0; self < 8; ++self) {  // node = cell e's lowest node + corner offset
+    const int ex = li + 1 - (self >> 2), ey = lj + 1 - ((self >> 1) & 1), ez = lk + 1 - (self & 1);  // halo indices
+    if (!cells.in_omega[ex][ey][ez]) continue;
+    for (int other = 0; other < 8; ++other) fn(self, other, ex + (other >> 2), ey + ((other >> 1) & 1), ez + (other & 1));
+  }
+}
 }  // namespace ddmp_grid_detail
 
 // Sizes and zeroes the nodal values for the grid's active blocks and finds each block's
@@ -137,9 +152,8 @@ inline void ddmp_nodal_stress(const SparseGrid& grid, Real h, DdmpNodalValues& n
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
-          const int n = omega_cells_around(cells, i, j, k);
           Real* m = nv.node(b, (i * bw + j) * bw + k);
-          const Real scale = n > 0 ? Real(8) / (Real(n) * h) : Real(0);
+          const Real scale = nodal_volume_scale(omega_cells_around(cells, i, j, k), h);
           for (int c = 0; c < 6; ++c) m[c] *= scale;
         }
   });
@@ -160,18 +174,13 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real f[3] = {0, 0, 0};
-          for (int corner = 0; corner < 8; ++corner) {  // node (i, j, k) is corner b of cell e = node − b
-            const int bx = corner >> 2, by = (corner >> 1) & 1, bz = corner & 1;
-            const int ex = i + 1 - bx, ey = j + 1 - by, ez = k + 1 - bz;  // halo indices
-            if (!cells.in_omega[ex][ey][ez]) continue;
-            for (int l = 0; l < 8; ++l) {
-              const Real* sj = s.v[ex + (l >> 2)][ey + ((l >> 1) & 1)][ez + (l & 1)];
-              const Vec3& g = table[size_t(l)][size_t(corner)];
-              f[0] += sj[0] * g[0] + sj[5] * g[1] + sj[4] * g[2];
-              f[1] += sj[5] * g[0] + sj[1] * g[1] + sj[3] * g[2];
-              f[2] += sj[4] * g[0] + sj[3] * g[1] + sj[2] * g[2];
-            }
-          }
+          for_each_omega_corner_pair(cells, i, j, k, [&](int self, int other, int x, int y, int z) {
+            const Real* sj = s.v[x][y][z];  // node i = self, node j = other: T[j][i]
+            const Vec3& g = table[size_t(other)][size_t(self)];
+            f[0] += sj[0] * g[0] + sj[5] * g[1] + sj[4] * g[2];
+            f[1] += sj[5] * g[0] + sj[1] * g[1] + sj[3] * g[2];
+            f[2] += sj[4] * g[0] + sj[3] * g[1] + sj[2] * g[2];
+          });
           Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
           for (int a = 0; a < 3; ++a) node[lane::force + a] += f[a];
         }
@@ -192,20 +201,14 @@ inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_la
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real L[9] = {};
-          int n = 0;
-          for (int l = 0; l < 8; ++l) {  // node (i, j, k) is corner l of cell e = node − l
-            const int ex = i + 1 - (l >> 2), ey = j + 1 - ((l >> 1) & 1), ez = k + 1 - (l & 1);
-            if (!cells.in_omega[ex][ey][ez]) continue;
-            ++n;
-            for (int corner = 0; corner < 8; ++corner) {
-              const Real* vi = v.v[ex + (corner >> 2)][ey + ((corner >> 1) & 1)][ez + (corner & 1)];
-              const Vec3& g = table[size_t(l)][size_t(corner)];
-              for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) L[r * 3 + c] += vi[r] * g[c];
-            }
-          }
+          for_each_omega_corner_pair(cells, i, j, k, [&](int self, int other, int x, int y, int z) {
+            const Real* vi = v.v[x][y][z];  // node j = self, node i = other: T[j][i]
+            const Vec3& g = table[size_t(self)][size_t(other)];
+            for (int r = 0; r < 3; ++r)
+              for (int c = 0; c < 3; ++c) L[r * 3 + c] += vi[r] * g[c];
+          });
           Real* out = nv.node(b, (i * bw + j) * bw + k);
-          const Real scale = n > 0 ? Real(8) / (Real(n) * h) : Real(0);
+          const Real scale = nodal_volume_scale(omega_cells_around(cells, i, j, k), h);
           for (int c = 0; c < 9; ++c) out[c] = scale * L[c];
         }
   });
@@ -240,6 +243,27 @@ inline void add_ddmp_box_to_grid(const Bucket& b, const BlockTable& table, Bucke
     Real* g = nv.node(size_t(block), n);
     for (int c = 0; c < 6; ++c) g[c] += l[c];
   });
+}
+
+// The point's part of the nodal stress: −(1 − α) S̃_j V σ onto its cell's corners j
+// (minus_volume = −V, σ in Voigt order).
+inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_volume, const SymTensor& s,
+                                       BucketBuffer& buffer) {
+  for (int l = 0; l < 8; ++l) {
+    const Real c = st.corner[l] * minus_volume;
+    if (c == 0) continue;
+    Real* node = buffer.ddmp_corner(st.base, l);
+    for (int k = 0; k < 6; ++k) node[k] += c * s[k];
+  }
+}
+
+// The point's smoothed part of L̄: (1 − α) Σ_j S̃_j L_j over its cell's corners, row-major.
+inline void ddmp_corner_velocity_gradient(const DdmpCornerStencil& st, const BucketBuffer& buffer, Real L[9]) {
+  for (int k = 0; k < 9; ++k) L[k] = 0;
+  for (int l = 0; l < 8; ++l) {
+    const Real* node = buffer.ddmp_corner(st.base, l);
+    for (int k = 0; k < 9; ++k) L[k] += st.corner[l] * node[k];
+  }
 }
 
 // Copies the nodal L_j of the box into the buffer.

@@ -293,7 +293,7 @@ struct Simulation::Impl {
     if (!penalty_contact) return;
     update_penalty_contacts(particles(), contact_materials, sim.rigid_bodies_, sim.rigid_states_, contact);
     using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
-    constexpr int N = Weights::nodes_per_axis, bw = SparseGrid::block_width;
+    constexpr int N = Weights::nodes_per_axis;
     const Real h = settings().cell_size;
     for (uint32_t p : contact.touching) {
       const auto st = make_stencil<Weights>(particles().position[p], stencil_half_size<Weights>(particles(), p, h), 1 / h);
@@ -303,11 +303,8 @@ struct Simulation::Impl {
           for (int k = 0; k < N; ++k) {
             const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
             if (!(w > 0)) continue;
-            const int node[3] = {st.base[0] + i, st.base[1] + j, st.base[2] + k};
-            const int block = grid.find(floor_div(node[0], bw), floor_div(node[1], bw), floor_div(node[2], bw));
-            Real* lanes = grid.block(size_t(block)) +
-                          SparseGrid::node_offset(node[0] - bw * floor_div(node[0], bw), node[1] - bw * floor_div(node[1], bw),
-                                                  node[2] - bw * floor_div(node[2], bw));
+            // Active: the point's own scatter stencil reaches at least these nodes.
+            Real* lanes = grid.node(st.base[0] + i, st.base[1] + j, st.base[2] + k);
             for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
           }
     }

@@ -98,12 +98,10 @@ Simulation::Gathered Simulation::gather_from_grid() const {
               grad += vi * dw.transpose();
             }
         if constexpr (nodal_gradient) {
-          for (int l = 0; l < 8; ++l) {
-            const Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2), st.base[1] + ((l >> 1) & 1),
-                                                                       st.base[2] + (l & 1));
-            for (int r = 0; r < 3; ++r)
-              for (int c = 0; c < 3; ++c) grad(r, c) += st.corner[l] * node[r * 3 + c];
-          }
+          Real L[9];
+          ddmp_corner_velocity_gradient(st, buffer, L);
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) grad(r, c) += L[r * 3 + c];
         } else if constexpr (has_smoothed_gradient<Shape>::value)
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)

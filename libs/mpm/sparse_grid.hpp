@@ -54,6 +54,14 @@ class SparseGrid {
   Coord coord(size_t b) const { return key_to_coord(keys_[b]); }
   Real* block(size_t b) { return data_.data() + b * reals_per_block; }
   const Real* block(size_t b) const { return data_.data() + b * reals_per_block; }
+  // The lanes of node (i, j, k) (grid coordinates), or nullptr when its block is inactive.
+  Real* node(int i, int j, int k) {
+    const int b = find(floor_div(i, block_width), floor_div(j, block_width), floor_div(k, block_width));
+    if (b < 0) return nullptr;
+    return block(size_t(b)) + node_offset(i - block_width * floor_div(i, block_width),
+                                          j - block_width * floor_div(j, block_width),
+                                          k - block_width * floor_div(k, block_width));
+  }
   // Offset of node (li, lj, lk), 0 ≤ l < block_width, inside a block, in Reals.
   static int node_offset(int li, int lj, int lk) {
     return ((li * block_width + lj) * block_width + lk) * lane::count;

@@ -15,6 +15,7 @@
 #include "mpm/body.hpp"
 #include "mpm/bucket_buffer.hpp"
 #include "mpm/cell_occupancy.hpp"
+#include "mpm/ddmp_grid.hpp"
 #include "mpm/material_model.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
@@ -178,15 +179,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         }
       if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
         // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-        const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
-        const SymTensor& s = ps.stress[p];
-        for (int l = 0; l < 8; ++l) {
-          const Real c = st.corner[l] * v;
-          if (c == 0) continue;
-          Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2), st.base[1] + ((l >> 1) & 1),
-                                                               st.base[2] + (l & 1));
-          for (int k = 0; k < 6; ++k) node[k] += c * s[k];
-        }
+        scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
       } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
         // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
         for (int i = 0; i < N; ++i)
@@ -379,13 +372,8 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               }
               if constexpr (gradient && has_grid_smoothed_gradient<Shape>::value) {
                 // DDMP on the grid: + (1 − α) Σ_j S̃_j L_j, the nodal L of ddmp_grid.hpp.
-                Real L[9] = {};
-                for (int l = 0; l < 8; ++l) {
-                  const Real c = st.corner[l];
-                  const Real* node = buffer.ddmp.data() + buffer.ddmp_offset(st.base[0] + (l >> 2),
-                                                                             st.base[1] + ((l >> 1) & 1), st.base[2] + (l & 1));
-                  for (int k = 0; k < 9; ++k) L[k] += c * node[k];
-                }
+                Real L[9];
+                ddmp_corner_velocity_gradient(st, buffer, L);
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
               }

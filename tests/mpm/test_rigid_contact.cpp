@@ -52,21 +52,16 @@ Settings block_settings(const Vec3& gravity, int threads = 2) {
   return s;
 }
 
-Vec3 centre_of_mass_velocity(const Simulation& sim) {
-  Vec3 p = Vec3::Zero();
+// The mass-weighted mean of a per-point vector (position: the centre of mass).
+Vec3 mass_weighted_mean(const Simulation& sim, const std::vector<Vec3>& field) {
+  Vec3 sum = Vec3::Zero();
   Real m = 0;
   const Particles& ps = sim.particles();
-  for (size_t i = 0; i < ps.size(); ++i) p += ps.mass[i] * ps.velocity[i], m += ps.mass[i];
-  return p / m;
+  for (size_t i = 0; i < ps.size(); ++i) sum += ps.mass[i] * field[i], m += ps.mass[i];
+  return sum / m;
 }
-
-Vec3 centre_of_mass(const Simulation& sim) {
-  Vec3 x = Vec3::Zero();
-  Real m = 0;
-  const Particles& ps = sim.particles();
-  for (size_t i = 0; i < ps.size(); ++i) x += ps.mass[i] * ps.position[i], m += ps.mass[i];
-  return x / m;
-}
+Vec3 centre_of_mass(const Simulation& sim) { return mass_weighted_mean(sim, sim.particles().position); }
+Vec3 centre_of_mass_velocity(const Simulation& sim) { return mass_weighted_mean(sim, sim.particles().velocity); }
 }  // namespace
 
 TEST_CASE("The contact law pushes along the normal and caps friction at the Coulomb cone", "[mpm][contact]") {
