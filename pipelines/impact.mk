@@ -48,14 +48,16 @@ $(IM_OUT)/points.h5: $(IM_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
 
 # One run per shape function; run-case.sh puts the flyer on the top plate of geometry.h5.
 # The scene and overrides of a run go to run-<case>.set, rewritten only when they change
-# (pipelines/common.mk): editing a case's settings here reruns exactly that case.
+# (pipelines/common.mk): editing a case's settings here reruns exactly that case. As in
+# pipelines/common.mk, the tools and scripts are order-only: editing them does not throw away
+# finished runs (each takes tens of minutes at paper resolution).
 im_words = $(IM_SRC)/impact.toml --set points.0.file=$(IM_OUT)/points.h5 --set grid.cell=$(IM_CELL) \
   --set grid.shape=$(1) --set run.end.time=$(IM_END) --set rigid_bodies.flyer.mass=$(IM_MASS) \
   --set output.series_every=$(IM_SERIES)
 define im_run
 $(call pipeline_args,$(IM_OUT)/run-$(call im_case,$(1)).set,$(call im_words,$(1)))
 $(IM_OUT)/run-$(call im_case,$(1))/wall_time.txt: $(IM_OUT)/run-$(call im_case,$(1)).set $(IM_OUT)/points.h5 \
-    $(IM_OUT)/geometry.h5 $(IM_SRC)/impact.toml $(IM_SRC)/run-case.sh $(PIPELINE_COMMON)/solve-case.sh | $(BIN)/latmpm-solve
+    $(IM_OUT)/geometry.h5 $(IM_SRC)/impact.toml | $(BIN)/latmpm-solve $(IM_SRC)/run-case.sh $(PIPELINE_COMMON)/solve-case.sh
 	bash $(IM_SRC)/run-case.sh $(BIN) $(IM_OUT)/run-$(call im_case,$(1)) $$(SOLVE_THREADS) $(IM_OUT)/geometry.h5 -- \
 	  $$$$(cat $(IM_OUT)/run-$(call im_case,$(1)).set)
 endef

@@ -96,6 +96,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const auto points = file.read_int64("/output/frame_points");
     for (size_t i = 0; i < names.size(); ++i) kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i])});
     wall_before = file.double_attribute("/output", "wall_seconds");
+  } else {
+    // A checkpoint left by an earlier run in this directory is not this run's state: resuming
+    // from it after this run is stopped would splice two runs together.
+    fs::remove(checkpoint_path, ec);
+    if (ec) throw InputError(checkpoint_path, "", "cannot remove the earlier run's checkpoint: " + ec.message());
   }
   write_text_atomically(run_dir + "/scene.toml",
                         "# Resolved scene written by " + provenance_.tool + " " + provenance_.version +

@@ -255,6 +255,13 @@ TEST_CASE("A run stopped half-way and resumed gives the same series as one that 
   // A resume needs a checkpoint; a scene with it is a usage error.
   CHECK(run_solve("--resume " + (scratch() / "no-such-run").string() + " --quiet").status == 2);
   CHECK(run_solve(scene + " --resume " + half.string()).status == 1);
+  // A fresh run into a directory drops the checkpoint an earlier run left there, so that a
+  // later --resume cannot continue the earlier run's state under this run's log and series.
+  fs::copy_file(half / "checkpoint.h5", whole / "checkpoint.h5", fs::copy_options::overwrite_existing);
+  r = run_solve(scene + " -o " + whole.string() + " --quiet --threads 2");
+  REQUIRE(r.status == 0);
+  CHECK_FALSE(fs::exists(whole / "checkpoint.h5"));
+  CHECK(run_solve("--resume " + whole.string() + " --quiet").status == 2);
 }
 
 TEST_CASE("A free rigid flyer writes the flyer columns and conserves its energy", "[solve]") {
