@@ -11,7 +11,14 @@
 namespace latmpm::mpm {
 
 std::string to_string(RigidShape shape) { return shape == RigidShape::box ? "box" : "half_space"; }
-std::string to_string(RigidMotion motion) { return motion == RigidMotion::driven ? "driven" : "free"; }
+std::string to_string(RigidMotion motion) {
+  switch (motion) {
+    case RigidMotion::driven: return "driven";
+    case RigidMotion::free: return "free";
+    case RigidMotion::fixed: return "fixed";
+  }
+  return "?";
+}
 std::string to_string(RigidCoupling coupling) { return coupling == RigidCoupling::no_slip ? "no_slip" : "penalty"; }
 
 void validate(const RigidBodySettings& b, const std::string& where) {
@@ -29,6 +36,8 @@ void validate(const RigidBodySettings& b, const std::string& where) {
   if (!b.velocity.allFinite()) throw InputError(where, key + "velocity", "must be finite");
   if (b.motion == RigidMotion::free && !(b.mass > 0 && std::isfinite(b.mass)))
     throw InputError(where, key + "mass", "a free rigid body needs a positive mass");
+  if (b.motion == RigidMotion::fixed && b.velocity != Vec3::Zero())
+    throw InputError(where, key + "velocity", "a fixed rigid body stays at rest: its velocity must be zero");
   if (!(b.contact_stiffness >= 0 && std::isfinite(b.contact_stiffness)))
     throw InputError(where, key + "contact.stiffness", "must be positive (or 0 for the default)");
   if (!(b.friction >= 0)) throw InputError(where, key + "contact.friction", "must be 0 or positive");
@@ -117,6 +126,10 @@ void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& s, const 
                         const Vec3& gravity, Real dt) {
   s.reaction = reaction;
   s.work += dt * reaction.dot(s.velocity);
+  if (body.motion == RigidMotion::fixed) {  // at rest: no displacement, not even round-off
+    s.velocity = Vec3::Zero();
+    return;
+  }
   if (body.motion == RigidMotion::driven) {
     s.velocity = body.velocity;
     s.displacement += dt * body.velocity;

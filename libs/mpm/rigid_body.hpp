@@ -1,7 +1,7 @@
-// Rigid bodies as geometry, not particles: a box or a half-space that is either driven at a
-// prescribed velocity (a compressing plate) or free, with a mass, an initial velocity and
-// gravity (paper A Sec. 6: the 10 kg impact flyer at 2 m/s). They need no 1e6-density
-// particles and carry no mass to the grid.
+// Rigid bodies as geometry, not particles: a box or a half-space that is driven at a
+// prescribed velocity (a compressing plate), fixed (a support: an anvil, a base), or free,
+// with a mass, an initial velocity and gravity (paper A Sec. 6: the 10 kg impact flyer at
+// 2 m/s). They need no 1e6-density particles and carry no mass to the grid.
 //
 // Coupling through the grid, no-slip as in paper A (its heavy-particle plates stick too):
 // after the explicit grid update, every node with mass whose support (the cube of one cell
@@ -41,6 +41,7 @@ enum class RigidShape {
 enum class RigidMotion {
   driven,  // moves at `velocity` whatever the force on it
   free,    // M dV/dt = force from the specimen + M g (if `gravity`); `velocity` is V(0)
+  fixed,   // stays where it is: a support (its `velocity` must be zero); its reaction is recorded
 };
 
 // How a body acts on the material.
@@ -59,7 +60,7 @@ struct RigidBodySettings {
   Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();          // m (box)
   Vec3 plane_point = Vec3::Zero(), plane_normal = Vec3::UnitZ();  // m, unit (half_space)
   RigidMotion motion = RigidMotion::driven;
-  Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free)
+  Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free); zero (fixed)
   Real mass = 0;                 // kg, free bodies
   bool gravity = true;           // free bodies: Settings::gravity acts on them
   RigidCoupling coupling = RigidCoupling::no_slip;
@@ -71,8 +72,9 @@ struct RigidBodySettings {
 };
 
 // Throws InputError(where, "rigid_bodies.<name>.<key>", ...) for an empty or inverted box, a
-// zero normal, a free body without a positive mass, non-finite values, a negative or
-// non-finite contact stiffness, a negative or NaN friction coefficient.
+// zero normal, a free body without a positive mass, a fixed body with a non-zero velocity,
+// non-finite values, a negative or non-finite contact stiffness, a negative or NaN friction
+// coefficient.
 void validate(const RigidBodySettings& body, const std::string& where);
 
 // What changes during a run.
@@ -102,12 +104,13 @@ void impose_rigid_velocities(SparseGrid& grid, Real h, int lane,
                              const std::vector<RigidBodySettings>& bodies,
                              const std::vector<RigidBodyState>& states);
 
-// Advances a body over a step of length dt after the grid update gave its reaction.
+// Advances a body over a step of length dt after the grid update gave its reaction (a fixed
+// body stays at rest and only records it).
 void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& state, const Vec3& reaction,
                         const Vec3& gravity, Real dt);
 
 // Kinetic energy ½ M V² and potential energy −M g·(X − X(0)) of a free body (J); zero for
-// driven bodies (their energy is not part of the model: they are a boundary condition).
+// driven and fixed bodies (their energy is not part of the model: they are a boundary condition).
 Real rigid_kinetic_energy(const RigidBodySettings& body, const RigidBodyState& state);
 Real rigid_potential_energy(const RigidBodySettings& body, const RigidBodyState& state, const Vec3& gravity);
 

@@ -168,10 +168,22 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
 // base, 88 % of the work unaccounted for). Point bodies by their points' box plus the points'
 // domain half-size (the body's surface), rigid boxes by their geometry. (Closer than a cell
 // is allowed: paper-style densification runs end with less than a cell of material left.)
+// Fixed rigid bodies count like fixed point bodies: a box by its geometry; a half-space,
+// unbounded across its normal, has no footprint to miss, so a driven body approaching it
+// is caught once its nearest corner crosses the surface. (Driven half-spaces, unbounded
+// themselves, are not checked.)
 void Simulation::check_bodies_apart() const {
   struct Box {
     std::string name;
     Vec3 lo, hi, velocity;
+  };
+  auto fail = [&](const std::string& driven_name, const std::string& fixed_name, Real gap) {
+    std::ostringstream msg;
+    msg << "step " << diagnostics_.step << " (t = " << diagnostics_.time << " s): the driven body '" << driven_name
+        << "' has reached the fixed body '" << fixed_name << "' (gap " << gap
+        << " m): no material is left between them to compress, and their constraints would fight over "
+           "the same grid nodes; end the run earlier (run.end)";
+    throw NumericalError(msg.str());
   };
   std::vector<Box> driven, fixed;
   for (size_t b = 0; b < bodies_.size(); ++b) {
@@ -189,6 +201,14 @@ void Simulation::check_bodies_apart() const {
     if (rigid_bodies_[k].motion == RigidMotion::driven && rigid_bodies_[k].shape == RigidShape::box)
       driven.push_back({rigid_bodies_[k].name, rigid_bodies_[k].box_min + rigid_states_[k].displacement,
                         rigid_bodies_[k].box_max + rigid_states_[k].displacement, rigid_states_[k].velocity});
+  std::vector<size_t> fixed_half_spaces;
+  for (size_t k = 0; k < rigid_bodies_.size(); ++k) {
+    if (rigid_bodies_[k].motion != RigidMotion::fixed) continue;
+    if (rigid_bodies_[k].shape == RigidShape::box)
+      fixed.push_back({rigid_bodies_[k].name, rigid_bodies_[k].box_min, rigid_bodies_[k].box_max, Vec3::Zero()});
+    else
+      fixed_half_spaces.push_back(k);
+  }
   for (const Box& d : driven) {
     if (!(d.velocity.norm() > 0)) continue;
     const Vec3 a = d.velocity.normalized();
@@ -210,12 +230,22 @@ void Simulation::check_bodies_apart() const {
       // behind the driven one, or beside it along a, never counts.
       const Real gap = back - front, start_gap = gap + d.velocity.norm() * diagnostics_.time;
       if (!(start_gap >= 0 && gap <= 0)) continue;
-      std::ostringstream msg;
-      msg << "step " << diagnostics_.step << " (t = " << diagnostics_.time << " s): the driven body '" << d.name
-          << "' has reached the fixed body '" << f.name << "' (gap " << gap
-          << " m): no material is left between them to compress, and their constraints would fight over "
-             "the same grid nodes; end the run earlier (run.end)";
-      throw NumericalError(msg.str());
+      fail(d.name, f.name, gap);
+    }
+    for (size_t k : fixed_half_spaces) {
+      // The gap along the half-space's normal n, from its surface to the box's nearest corner;
+      // it closes at −V·n, so a box moving along or away from the surface never counts.
+      const RigidBodySettings& f = rigid_bodies_[k];
+      const Vec3 n = f.plane_normal.normalized();
+      const Real closing = -d.velocity.dot(n);
+      if (!(closing > 0)) continue;
+      Real gap = std::numeric_limits<Real>::infinity();
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 cd((corner & 1) ? d.hi[0] : d.lo[0], (corner & 2) ? d.hi[1] : d.lo[1], (corner & 4) ? d.hi[2] : d.lo[2]);
+        gap = std::min(gap, (cd - f.plane_point).dot(n));
+      }
+      const Real start_gap = gap + closing * diagnostics_.time;
+      if (start_gap >= 0 && gap <= 0) fail(d.name, f.name, gap);
     }
   }
 }
@@ -329,7 +359,9 @@ void Simulation::finish_step(Real dt, Real stable) {
     const Real rigid_power = penalty ? Real(0.5) * (im.contact.power[k] + contact_power_end[k])
                                      : r.dot(rigid_states_[k].velocity);
     power += rigid_power;
-    if (rigid_bodies_[k].motion == RigidMotion::driven) driven_rigid_work_ += dt * rigid_power;
+    // Bodies of prescribed motion are boundary conditions: their work enters the balance (a
+    // fixed no-slip body's is zero; a fixed penalty body's is its springs' work on the points).
+    if (rigid_bodies_[k].motion != RigidMotion::free) driven_rigid_work_ += dt * rigid_power;
     advance_rigid_body(rigid_bodies_[k], rigid_states_[k], r, settings_.gravity, dt);
     rigid_energy += rigid_kinetic_energy(rigid_bodies_[k], rigid_states_[k]) +
                     rigid_potential_energy(rigid_bodies_[k], rigid_states_[k], settings_.gravity);

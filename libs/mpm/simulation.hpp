@@ -138,7 +138,7 @@ class Simulation {
   std::vector<RigidBodySettings> rigid_bodies_;
   std::vector<RigidBodyState> rigid_states_;
   Real initial_rigid_energy_ = 0;  // J, Σ kinetic + potential of free rigid bodies at the start
-  Real driven_rigid_work_ = 0;     // J, work of driven rigid bodies on the model so far
+  Real driven_rigid_work_ = 0;     // J, work of driven and fixed rigid bodies on the model so far
 };
 
 }  // namespace latmpm::mpm

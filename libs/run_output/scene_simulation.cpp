@@ -61,7 +61,9 @@ std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene) {
     b.box_max = r.max;
     b.plane_point = r.point;
     b.plane_normal = r.normal.normalized();
-    b.motion = r.motion == RigidBodySpec::driven ? mpm::RigidMotion::driven : mpm::RigidMotion::free;
+    b.motion = r.motion == RigidBodySpec::driven ? mpm::RigidMotion::driven
+               : r.motion == RigidBodySpec::free ? mpm::RigidMotion::free
+                                                 : mpm::RigidMotion::fixed;
     b.velocity = r.velocity;
     b.mass = r.mass;
     b.gravity = r.gravity;

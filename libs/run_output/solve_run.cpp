@@ -62,13 +62,13 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
                        "): " + std::to_string(count[b]) + " points\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
                                                   solver_settings(scene_, options_.threads), scene_.where);
-  for (const auto& r : solver_rigid_bodies(scene_)) simulation_->add_rigid_body(r);
-  for (const auto& r : scene_.rigid_bodies)
-    points_summary_ += "rigid body " + r.name + " (" + (r.motion == RigidBodySpec::free ? "free" : "driven") + " " +
-                       (r.shape == RigidBodySpec::box ? "box" : "half_space") +
-                       (r.motion == RigidBodySpec::free ? ", " + format("%g", r.mass) + " kg" : std::string()) +
+  for (const auto& r : solver_rigid_bodies(scene_)) {
+    simulation_->add_rigid_body(r);
+    points_summary_ += "rigid body " + r.name + " (" + mpm::to_string(r.motion) + " " + mpm::to_string(r.shape) +
+                       (r.motion == mpm::RigidMotion::free ? ", " + format("%g", r.mass) + " kg" : std::string()) +
                        ", velocity " + format("%g", r.velocity.x()) + " " + format("%g", r.velocity.y()) + " " +
                        format("%g", r.velocity.z()) + " m/s)\n";
+  }
 }
 
 SolveRun::~SolveRun() = default;

@@ -9,7 +9,8 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"dt", "s", "time step of the step"},
       {"displacement", "m", "driven body's travel along the loading axis"},
       {"load_driven", "N", "reaction on the driven bodies along the loading axis, compression positive"},
-      {"load_fixed", "N", "reaction on the fixed bodies and held points against the loading axis, compression positive"},
+      {"load_fixed", "N",
+       "reaction on the fixed point and rigid bodies and held points against the loading axis, compression positive"},
       {"load_record", "N", "record layer: -(mean vertical stress) x area (Paper A Sec. 5.1), compression positive"},
       {"kinetic_energy", "J", "1/2 sum m v^2 over deformable points"},
       {"strain_energy", "J", "sum V0 psi over deformable points"},
@@ -18,7 +19,7 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"constraint_work", "J", "work of the fixed and driven point bodies' reactions (zero for a fixed base)"},
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
-       "kinetic + strain + flyer energy - initial - constraint_work - gravity_work - driven rigid plates' work"},
+       "kinetic + strain + flyer energy - initial - constraint_work - gravity_work - driven and fixed rigid bodies' work"},
   };
   if (with_flyer) {
     const std::vector<SeriesColumn> flyer = {
@@ -56,7 +57,8 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
       load_fixed = load_fixed - reaction.dot(axis);
     }
   }
-  // Geometric rigid bodies: driven plates like driven point bodies; free ones are flyers.
+  // Geometric rigid bodies: driven plates like driven point bodies, fixed ones like fixed
+  // point bodies (the base's reaction against the axis); free ones are flyers.
   const auto& rigid = sim.rigid_bodies();
   double load_flyer = 0;
   const mpm::RigidBodyState* flyer = nullptr;
@@ -67,6 +69,8 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
       load_driven += along;
       if (!displacement_taken) displacement = Eigen::Vector3d(d.rigid[k].displacement).dot(axis);
       displacement_taken = true;
+    } else if (rigid[k].motion == mpm::RigidMotion::fixed) {
+      load_fixed = load_fixed - along;
     } else {
       load_flyer += along;
       if (!flyer) flyer = &d.rigid[k], flyer_settings = &rigid[k];

@@ -24,11 +24,11 @@ const char* to_string(MaterialModel model);
 // A rigid body given by its geometry ([rigid_bodies.<name>]): no points, no mass on the grid.
 struct RigidBodySpec {
   enum Shape { box, half_space } shape = box;
-  enum Motion { driven, free } motion = driven;
+  enum Motion { driven, free, fixed } motion = driven;
   Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // m (box)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();                                // m (half_space)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // out of the body, toward the specimen
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: prescribed (driven), initial (free)
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: prescribed (driven), initial (free), 0 (fixed)
   double mass = 0;       // kg (free)
   bool gravity = true;   // free: gravity acts on it
   // contact = { model = "penalty", friction = 0.1, stiffness = "2e4N/m" }: penalty contact of

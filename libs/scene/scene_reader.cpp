@@ -190,9 +190,11 @@ void read_rigid_bodies(TableReader rigid, Scene& s) {
     TableReader b = rigid.table(name);
     RigidBodySpec body;
     body.name = name;
-    const std::string motion = b.choice("motion", {"driven", "free"}, "");
+    const std::string motion = b.choice("motion", {"driven", "free", "fixed"}, "");
     body.where = b.where("motion");
-    body.motion = motion == "free" ? RigidBodySpec::free : RigidBodySpec::driven;
+    body.motion = motion == "free"    ? RigidBodySpec::free
+                  : motion == "fixed" ? RigidBodySpec::fixed
+                                      : RigidBodySpec::driven;
     body.shape = b.choice("shape", {"box", "half_space"}, "box") == "box" ? RigidBodySpec::box
                                                                           : RigidBodySpec::half_space;
     if (body.shape == RigidBodySpec::box) {
@@ -210,11 +212,15 @@ void read_rigid_bodies(TableReader rigid, Scene& s) {
       if (body.velocity.norm() == 0) b.fail("velocity", "a driven body needs a non-zero velocity");
       if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is driven)");
       if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is driven)");
-    } else {
+    } else if (body.motion == RigidBodySpec::free) {
       body.velocity = b.vector("velocity", dimension::velocity, "0m/s");
       body.mass = b.quantity("mass", dimension::mass);
       if (!(body.mass > 0)) b.fail("mass", "must be positive");
       body.gravity = b.boolean("gravity", true);
+    } else {
+      if (b.has("velocity")) b.fail("velocity", "a fixed rigid body stays at rest: it takes no velocity");
+      if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is fixed)");
+      if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is fixed)");
     }
     read_rigid_contact(b, body);
     b.finish();
