@@ -28,6 +28,7 @@ constexpr int bottom_points = 8 * 8;  // a 4 mm block at 2 points per 1 mm cell
 RigidBodySettings floor_plane(Real friction, Real stiffness) {
   RigidBodySettings f;
   f.name = "floor";
+  f.motion = RigidMotion::fixed;
   f.shape = RigidShape::half_space;
   f.plane_point = Vec3::Zero();
   f.plane_normal = Vec3::UnitZ();

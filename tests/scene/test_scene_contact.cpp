@@ -1,5 +1,6 @@
 // The `contact` key of [rigid_bodies.<name>]: penalty contact with friction instead of the
-// default no-slip coupling; units required; errors name file, line and key.
+// default no-slip coupling; units required; errors name file, line and key. And the rigid
+// body at rest, `motion = "fixed"` (a base), which takes no velocity, mass or gravity.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -23,10 +24,19 @@ std::string scratch_dir() {
   return dir;
 }
 
-// A column under a rigid half-space plate; line 11 is the contact line.
-std::string scene_with(const std::string& contact_line) {
+const std::string driven_motion = "motion = \"driven\"\n";
+
+// A column under a rigid half-space plate; line 11 is the contact line, line 16 the last
+// line of `motion_lines` (line 12 on) and `end` line 2's table.
+std::string scene_with(const std::string& contact_line,
+                       const std::string& motion_lines = driven_motion +
+                                                         "shape = \"half_space\"\n"
+                                                         "point = [\"0mm\", \"0mm\", \"10mm\"]\n"
+                                                         "normal = [0, 0, -1]\n"
+                                                         "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\n",
+                       const std::string& end = "{ time = \"1ms\" }") {
   return "[run]\n"                                                                 // 1
-         "end = { time = \"1ms\" }\n"                                              // 2
+         "end = " + end + "\n" +                                                   // 2
          "[grid]\n"                                                                // 3
          "cell = \"1mm\"\n"                                                        // 4
          "[[points]]\n"                                                            // 5
@@ -36,11 +46,17 @@ std::string scene_with(const std::string& contact_line) {
          "material = { E = \"10MPa\", nu = 0.4, density = \"1050kg/m^3\" }\n"      // 9
          "[rigid_bodies.plate]\n"                                                  // 10
          + contact_line + "\n" +                                                   // 11
-         "motion = \"driven\"\n"                                                   // 12
-         "shape = \"half_space\"\n"                                                // 13
-         "point = [\"0mm\", \"0mm\", \"10mm\"]\n"                                  // 14
-         "normal = [0, 0, -1]\n"                                                   // 15
-         "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\n";                      // 16
+         motion_lines;                                                            // 12-16
+}
+
+// The plate as a fixed base under the column (lines 12-15) and `extra` on line 16.
+std::string fixed_base_with(const std::string& extra) {
+  return scene_with("contact = { model = \"penalty\", friction = 0.3 }",
+                    "motion = \"fixed\"\n"                                           // 12
+                    "shape = \"half_space\"\n"                                       // 13
+                    "point = [\"0mm\", \"0mm\", \"0mm\"]\n"                          // 14
+                    "normal = [0, 0, 1]\n"                                           // 15
+                        + extra + "\n");                                           // 16
 }
 
 Scene parse(const std::string& text) { return parse_scene(text, "scene.toml", scratch_dir()); }
@@ -95,5 +111,46 @@ TEST_CASE("Contact errors name the file, the line and the key", "[scene][contact
     CHECK(e.where() == "scene.toml:11");
     CHECK(e.field() == c.key);
     CHECK_THAT(e.problem(), Catch::Contains(c.problem));
+  }
+}
+
+TEST_CASE("A fixed rigid body is a base at rest that is not a driven body", "[scene][contact]") {
+  const Scene scene = parse(fixed_base_with(""));
+  const RigidBodySpec& base = scene.rigid_bodies.at(0);
+  CHECK(base.motion == RigidBodySpec::fixed);
+  CHECK(base.velocity == Eigen::Vector3d::Zero());
+  CHECK(base.contact == RigidBodySpec::penalty);
+  CHECK(base.friction == 0.3);
+  const Scene again = parse_scene(scene.resolved_toml, "resolved.toml", "/nonexistent");
+  CHECK(again.rigid_bodies.at(0).motion == RigidBodySpec::fixed);
+
+  // It does not count as the one driven body run.end.plate_displacement needs.
+  try {
+    parse(scene_with("", "motion = \"fixed\"\nmin = [\"0mm\", \"0mm\", \"-1mm\"]\nmax = [\"1mm\", \"1mm\", \"0mm\"]\n",
+                     "{ plate_displacement = \"1mm\" }"));
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.field() == "run.end.plate_displacement");
+    CHECK_THAT(e.problem(), Catch::Contains("the scene has 0"));
+  }
+}
+
+TEST_CASE("A fixed rigid body given a velocity, a mass or gravity is an error naming the key", "[scene][contact]") {
+  struct Case {
+    std::string line, key;
+  };
+  auto c = GENERATE(values<Case>({
+      {"velocity = [\"0mm/s\", \"0mm/s\", \"0mm/s\"]", "rigid_bodies.plate.velocity"},  // even at rest
+      {"mass = \"1kg\"", "rigid_bodies.plate.mass"},
+      {"gravity = false", "rigid_bodies.plate.gravity"},
+  }));
+  CAPTURE(c.line);
+  try {
+    parse(fixed_base_with(c.line));
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.where() == "scene.toml:16");
+    CHECK(e.field() == c.key);
+    CHECK_THAT(e.problem(), Catch::Contains("fixed"));
   }
 }
