@@ -144,18 +144,44 @@ TEST_CASE("A driven or rigid body faster than the material's wave speed is refus
 TEST_CASE("A driven plate that reaches the fixed base stops the run", "[mpm][stability]") {
   // A 3-cell-thin cube between a base and a plate at 5 m/s, with the J check off so the
   // squeezed material lets the plate through: the run stops when the plate's surface
-  // reaches the base's, not before, naming both bodies.
+  // reaches the base's, not before, naming both bodies. The base is a point body or a fixed
+  // rigid body (a box of the same extent, or the half-space below z = 0); the plate a point
+  // body or a driven rigid box.
+  enum class Base { points, rigid_box, rigid_half_space };
+  const Base kind = GENERATE(Base::points, Base::rigid_box, Base::rigid_half_space);
+  const bool rigid_plate = GENERATE(false, true);
   const Real h = 1e-3;
+  const Vec3 plate_velocity(0, 0, -5);
   PointSet points = empty_point_set(h, 2);
   add_points(points, Eigen::Vector3d::Zero(), Eigen::Vector3d(4 * h, 4 * h, 3 * h), "cube");
-  add_points(points, Eigen::Vector3d(0, 0, -h), Eigen::Vector3d(4 * h, 4 * h, 0), "base");
-  add_points(points, Eigen::Vector3d(0, 0, 3 * h), Eigen::Vector3d(4 * h, 4 * h, 4 * h), "plate");
+  if (kind == Base::points) add_points(points, Eigen::Vector3d(0, 0, -h), Eigen::Vector3d(4 * h, 4 * h, 0), "base");
+  if (!rigid_plate) add_points(points, Eigen::Vector3d(0, 0, 3 * h), Eigen::Vector3d(4 * h, 4 * h, 4 * h), "plate");
   Settings s = base_settings(h);
   s.min_jacobian = 0;  // let the squeezed material through: the check under test must fire
-  Simulation sim(points, {deformable("cube", rubber), rigid("base", BodyRole::fixed, Vec3::Zero(), 1000),
-                          rigid("plate", BodyRole::driven, Vec3(0, 0, -5), 1000)}, s);
+  std::vector<BodySettings> bodies = {deformable("cube", rubber)};
+  if (kind == Base::points) bodies.push_back(rigid("base", BodyRole::fixed, Vec3::Zero(), 1000));
+  if (!rigid_plate) bodies.push_back(rigid("plate", BodyRole::driven, plate_velocity, 1000));
+  Simulation sim(points, bodies, s);
+  if (rigid_plate) {
+    RigidBodySettings plate;
+    plate.name = "plate";
+    plate.box_min = Vec3(0, 0, 3 * h);
+    plate.box_max = Vec3(4 * h, 4 * h, 4 * h);
+    plate.velocity = plate_velocity;
+    sim.add_rigid_body(plate);
+  }
+  if (kind != Base::points) {
+    RigidBodySettings base;
+    base.name = "base";
+    base.motion = RigidMotion::fixed;
+    base.shape = kind == Base::rigid_box ? RigidShape::box : RigidShape::half_space;
+    base.box_min = Vec3(0, 0, -h);
+    base.box_max = Vec3(4 * h, 4 * h, 0);
+    base.plane_normal = Vec3::UnitZ();  // through the origin
+    sim.add_rigid_body(base);
+  }
   const std::string message = message_of<NumericalError>([&] { sim.run_until(4 * h / 5); });
-  INFO(message);
+  INFO("base " << int(kind) << (rigid_plate ? ", rigid plate: " : ", point plate: ") << message);
   CHECK_THAT(message, Catch::Matchers::Contains("'plate' has reached the fixed body 'base'"));
   CHECK(5 * sim.time() == Approx(3 * h).margin(0.05 * h));  // the gap was the cube's 3 mm
 }
