@@ -18,7 +18,7 @@ const char* const manual =
 
 The scene (TOML, docs/scene.md) names the point files (latmpm-voxelize), gives each body a
 role (deformable, fixed, driven at a velocity) and a material, rigid bodies by geometry
-(a driven plate, or a free flyer with a mass: [rigid_bodies]), the grid cell, shape function
+(a driven plate, a fixed base, or a free flyer with a mass: [rigid_bodies]), the grid cell, shape function
 (uGIMP, DDMP, ...), update scheme, time-step rule, end condition and outputs; every
 dimensional value carries its unit ("0.4mm", "10MPa", "-100mm/s"). --set overrides any key.
 The run directory receives scene.toml (resolved), log.txt, series.csv and series.h5 (time,
