@@ -113,82 +113,89 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
     if (rigid && !Mode::constraint) continue;
-    for (uint32_t p = run.begin; p < run.end; ++p) {
-      const auto st = particle_stencil<Shape, Mode::force>(ps, p, h, buffer);
-      Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-      // Rigid points mark every node they touch with their body: those nodes take the body's
-      // prescribed velocity (zero unless driven). Held points of a deformable body mark the
-      // touched nodes except those lying inward (against hold_outward) by more than half
-      // the point's half-size: the nodes on and beyond the body's held face. Holding every
-      // node they touch would freeze the whole cell band they sit in, held points included,
-      // and a record layer among them would read zero stress; holding only the nodes near
-      // them would leave the tiny-mass node just outside free, whose huge velocity cancels
-      // the held points' strain (docs/solver.md, "Held points").
-      const bool held = !rigid && (ps.flags[p] & Particles::held_flag);
-      if (Mode::constraint && (rigid || held)) {
-        const Real marker = Real(run.body + 1);
-        const Vec3& n = bodies[run.body].hold_outward;
-        const Real inward_limit = -Real(0.5) * n.cwiseAbs().dot(ps.half_size0[p]);
-        Real along[3][N];  // (x_node − x_p)·n, per axis part
-        for (int a = 0; a < 3; ++a)
-          for (int i = 0; i < N; ++i) along[a][i] = held ? ((st.base[a] + i) * h - ps.position[p][a]) * n[a] : Real(0);
-        for (int i = 0; i < N; ++i)
-          for (int j = 0; j < N; ++j)
-            for (int k = 0; k < N; ++k)
-              if (st.w[i][0] * st.w[j][1] * st.w[k][2] > 0 && along[0][i] + along[1][j] + along[2][k] >= inward_limit) {
-                Real& c = first[i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L + lane::constraint];
-                c = std::max(c, marker);
-              }
-      }
-      if (rigid) continue;  // rigid points carry no mass to the grid
-      // Lane vectors: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz.
-      NodeLanes a{}, fx{}, fy{}, fz{};
-      const Real m = ps.mass[p];
-      if constexpr (Mode::mass) a[lane::mass] = m;
-      if constexpr (Mode::momentum_lane >= 0)
-        for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
-      if constexpr (Mode::force) {
-        // f_i = −V σ ∇S_i with V = J V0 the current volume.
-        const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
-        const SymTensor& s = ps.stress[p];
-        fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
-        fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
-        fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
-      }
-      // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
-      // (with_trip_count; a run-time bound there changed the rounding of the results).
-      const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
-      for (int i = 0; i < ni; ++i)
-        for (int j = 0; j < nj; ++j) {
-          Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-          const Real wij = st.w[i][0] * st.w[j][1];
-          if constexpr (Mode::force) {
-            // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
-            const NodeLanes row_w = wij * a + (st.dw[i][0] * st.w[j][1]) * fx + (st.w[i][0] * st.dw[j][1]) * fy;
-            const NodeLanes row_d = wij * fz;
-            with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
-              for (int k = 0; k < nk; ++k)
-                store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
-            });
-          } else {
-            const NodeLanes row_w = wij * a;
-            with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
-              for (int k = 0; k < nk; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
-            });
-          }
+    // The stencils of up to eight points first: independent computations the CPU overlaps,
+    // instead of each one's latency ahead of its point's scatter.
+    decltype(particle_stencil<Shape, Mode::force>(ps, run.begin, h, buffer)) stencils[pack_width];
+    for (uint32_t p0 = run.begin; p0 < run.end; p0 += pack_width) {
+      const uint32_t p_end = std::min<uint32_t>(p0 + pack_width, run.end);
+      for (uint32_t p = p0; p < p_end; ++p) stencils[p - p0] = particle_stencil<Shape, Mode::force>(ps, p, h, buffer);
+      for (uint32_t p = p0; p < p_end; ++p) {
+        const auto& st = stencils[p - p0];
+        Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+        // Rigid points mark every node they touch with their body: those nodes take the body's
+        // prescribed velocity (zero unless driven). Held points of a deformable body mark the
+        // touched nodes except those lying inward (against hold_outward) by more than half
+        // the point's half-size: the nodes on and beyond the body's held face. Holding every
+        // node they touch would freeze the whole cell band they sit in, held points included,
+        // and a record layer among them would read zero stress; holding only the nodes near
+        // them would leave the tiny-mass node just outside free, whose huge velocity cancels
+        // the held points' strain (docs/solver.md, "Held points").
+        const bool held = !rigid && (ps.flags[p] & Particles::held_flag);
+        if (Mode::constraint && (rigid || held)) {
+          const Real marker = Real(run.body + 1);
+          const Vec3& n = bodies[run.body].hold_outward;
+          const Real inward_limit = -Real(0.5) * n.cwiseAbs().dot(ps.half_size0[p]);
+          Real along[3][N];  // (x_node − x_p)·n, per axis part
+          for (int a = 0; a < 3; ++a)
+            for (int i = 0; i < N; ++i) along[a][i] = held ? ((st.base[a] + i) * h - ps.position[p][a]) * n[a] : Real(0);
+          for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+              for (int k = 0; k < N; ++k)
+                if (st.w[i][0] * st.w[j][1] * st.w[k][2] > 0 && along[0][i] + along[1][j] + along[2][k] >= inward_limit) {
+                  Real& c = first[i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L + lane::constraint];
+                  c = std::max(c, marker);
+                }
         }
-      if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
-        // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-        scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
-      } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
-        // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
-        for (int i = 0; i < N; ++i)
-          for (int j = 0; j < N; ++j)
-            for (int k = 0; k < N; ++k) {
-              Real* node = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L;
-              const Vec3& g = st.smoothed[(i * N + j) * N + k];
-              store_lanes(node, load_lanes(node) + g[0] * fx + g[1] * fy + g[2] * fz);
+        if (rigid) continue;  // rigid points carry no mass to the grid
+        // Lane vectors: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz.
+        NodeLanes a{}, fx{}, fy{}, fz{};
+        const Real m = ps.mass[p];
+        if constexpr (Mode::mass) a[lane::mass] = m;
+        if constexpr (Mode::momentum_lane >= 0)
+          for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
+        if constexpr (Mode::force) {
+          // f_i = −V σ ∇S_i with V = J V0 the current volume.
+          const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
+          const SymTensor& s = ps.stress[p];
+          fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
+          fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
+          fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
+        }
+        // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
+        // (with_trip_count; a run-time bound there changed the rounding of the results).
+        const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
+        for (int i = 0; i < ni; ++i)
+          for (int j = 0; j < nj; ++j) {
+            Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
+            const Real wij = st.w[i][0] * st.w[j][1];
+            if constexpr (Mode::force) {
+              // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
+              const NodeLanes row_w = wij * a + (st.dw[i][0] * st.w[j][1]) * fx + (st.w[i][0] * st.dw[j][1]) * fy;
+              const NodeLanes row_d = wij * fz;
+              with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                for (int k = 0; k < nk; ++k)
+                  store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
+              });
+            } else {
+              const NodeLanes row_w = wij * a;
+              with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                for (int k = 0; k < nk; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
+              });
             }
+          }
+        if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
+          // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
+          scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
+        } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
+          // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
+          for (int i = 0; i < N; ++i)
+            for (int j = 0; j < N; ++j)
+              for (int k = 0; k < N; ++k) {
+                Real* node = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L;
+                const Vec3& g = st.smoothed[(i * N + j) * N + k];
+                store_lanes(node, load_lanes(node) + g[0] * fx + g[1] * fy + g[2] * fz);
+              }
+        }
       }
     }
   }
@@ -356,10 +363,13 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             }
             // 1. Interpolate from the grid, particle by particle: new velocity, its change
             //    and the velocity gradient, into lane q of the group's packs.
+            //    The group's stencils first: eight independent computations the CPU
+            //    overlaps, instead of each one's latency ahead of its particle's sums.
             Pack v_grid[3] = {}, dv[3] = {}, grad_v[3][3] = {};
+            decltype(particle_stencil<Shape, gradient>(ps, g0, h, buffer)) stencils[pack_width];
+            for (int q = 0; q < n; ++q) stencils[q] = particle_stencil<Shape, gradient>(ps, g0 + uint32_t(q), h, buffer);
             for (int q = 0; q < n; ++q) {
-              const uint32_t p = g0 + uint32_t(q);
-              const auto st = particle_stencil<Shape, gradient>(ps, p, h, buffer);
+              const auto& st = stencils[q];
               const auto [aw, ax, ay, az] = interpolate<gradient>(st, buffer);
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];
