@@ -6,9 +6,14 @@
 
 namespace latmpm {
 
-Progress::Progress(std::string label, double total, bool enabled, double interval_s)
-    : label_(std::move(label)), total_(total), enabled_(enabled), interval_(interval_s),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+double estimate_time_left(double elapsed, double done_at_start, double done, double total) {
+  const double progress = done - done_at_start;
+  return progress > 0 ? elapsed * (total - done) / progress : NAN;
+}
+
+Progress::Progress(std::string label, double total, bool enabled, double interval_s, double done_at_start)
+    : label_(std::move(label)), total_(total), done_at_start_(done_at_start), enabled_(enabled),
+      interval_(interval_s), start_(std::chrono::steady_clock::now()), last_(start_) {}
 
 double Progress::elapsed_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -34,7 +39,7 @@ void Progress::update(double done, const std::string& detail) {
   last_ = now;
   double elapsed = elapsed_seconds();
   double fraction = total_ > 0 ? done / total_ : 0;
-  double left = fraction > 0 ? elapsed * (1 - fraction) / fraction : NAN;
+  double left = estimate_time_left(elapsed, done_at_start_, done, total_);
   char buf[64];
   std::snprintf(buf, sizeof buf, "%5.1f%%", 100 * fraction);
   std::cerr << label_ << ": " << buf << ", elapsed " << format_duration(elapsed) << ", left ~"

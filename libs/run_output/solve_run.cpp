@@ -187,7 +187,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     last_checkpoint = wall;
   };
 
-  Progress progress(provenance_.tool, end, options_.progress);
+  const double time_at_start = sim.time();  // a resumed run starts part-way: its rate is this part's
+  Progress progress(provenance_.tool, end, options_.progress, 2.0, time_at_start);
   const auto start = std::chrono::steady_clock::now();
   double last_log = 0;
   int64_t last_row_step = earlier_rows.empty() ? 0 : int64_t(earlier_rows.back()[0]);
@@ -220,7 +221,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       last_log = wall;
       const double done = d.time / end;
       log.line("progress: " + format("%.1f", 100 * done) + "%, " + status_text() + ", left ~" +
-               format_duration(done > 0 ? wall * (1 - done) / done : NAN));
+               format_duration(estimate_time_left(wall, time_at_start, d.time, end)));
     }
   });
 
