@@ -153,10 +153,10 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         if constexpr (Mode::mass) a[lane::mass] = m;
         if constexpr (Mode::momentum_lane >= 0)
           for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
+        // f_i = −V σ ∇S_i with V = J V0 the current volume.
+        const Real v = Mode::force ? -ps.volume0[p] * ps.deformation[p].determinant() : Real(0);
+        const SymTensor& s = ps.stress[p];
         if constexpr (Mode::force) {
-          // f_i = −V σ ∇S_i with V = J V0 the current volume.
-          const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
-          const SymTensor& s = ps.stress[p];
           fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
           fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
           fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
@@ -185,7 +185,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
           }
         if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-          scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
+          scatter_ddmp_corner_stress(st, v, s, buffer);
         } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
           // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
           for (int i = 0; i < N; ++i)
