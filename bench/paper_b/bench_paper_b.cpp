@@ -1,12 +1,16 @@
 // bench_paper_b curves OUT.csv: uniaxial-stress and simple-shear responses of the J2 model
 // (paper B Eq. 9-13) for the 42CrMo4 and Ti-6Al-4V sets, one material point.
 // bench_paper_b timing: nanoseconds per J2 update (plastic) and per CPDI1 stencil.
+// bench_paper_b meshes PREFIX: the O-grid cylinders B1-B6 (d = l = 4 mm): a table of element
+// counts and volumes on stdout, and PREFIX-B<k>.dat with every element edge (gnuplot).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
 
+#include "hexmesh/hex_mesh.hpp"
 #include "mpm/cpdi.hpp"
 #include "mpm/j2_plasticity.hpp"
 
@@ -98,11 +102,32 @@ int timing() {
   return 0;
 }
 
+int meshes(const std::string& prefix) {
+  const double d = 4e-3, l = 4e-3, exact = M_PI * d * d / 4 * l;
+  std::printf("| mesh | divisions (core, ring, axial) | elements | volume (mm^3) | against pi r^2 l |\n|---|---|---|---|---|\n");
+  for (int level = 1; level <= 6; ++level) {
+    const CylinderMeshSpec spec = paper_b_cylinder(level, d, l);
+    const HexMesh mesh = cylinder_hex_mesh(spec);
+    const double volume = hex_mesh_volume(mesh);
+    std::printf("| B%d | %d, %d, %d | %zu | %.4f | %+.3f %% |\n", level, spec.core_divisions, spec.ring_divisions,
+                spec.axial_divisions, mesh.elements.size(), volume * 1e9, 100 * (volume / exact - 1));
+    std::ofstream out(prefix + "-B" + std::to_string(level) + ".dat");
+    static const int edge[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (const auto& e : mesh.elements)
+      for (const auto& ab : edge) {
+        const Eigen::Vector3d a = 1e3 * mesh.nodes[e[size_t(ab[0])]], b = 1e3 * mesh.nodes[e[size_t(ab[1])]];
+        out << a.x() << " " << a.y() << " " << a.z() << "\n" << b.x() << " " << b.y() << " " << b.z() << "\n\n\n";
+      }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 3 && !std::strcmp(argv[1], "curves")) return curves(argv[2]);
   if (argc == 2 && !std::strcmp(argv[1], "timing")) return timing();
-  std::fprintf(stderr, "usage: bench_paper_b curves OUT.csv | bench_paper_b timing\n");
+  if (argc == 3 && !std::strcmp(argv[1], "meshes")) return meshes(argv[2]);
+  std::fprintf(stderr, "usage: bench_paper_b curves OUT.csv | timing | meshes PREFIX\n");
   return 1;
 }
