@@ -94,7 +94,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const auto times = file.read_doubles("/output/frame_times");
     const auto steps = file.read_int64("/output/frame_steps");
     const auto points = file.read_int64("/output/frame_points");
-    for (size_t i = 0; i < names.size(); ++i) kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i])});
+    // The frames' extra scalars are the run's material history columns, the same in every frame.
+    std::vector<std::string> history;
+    for (const auto& column : sim.particles().history) history.push_back(column.name);
+    for (size_t i = 0; i < names.size(); ++i)
+      kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i]), history});
     wall_before = file.double_attribute("/output", "wall_seconds");
   } else {
     // A checkpoint left by an earlier run in this directory is not this run's state: resuming
