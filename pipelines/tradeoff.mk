@@ -44,15 +44,15 @@ $(TO_OUT)/lattice/points-h%.h5: | $(BIN)/latmpm-lattice $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-lattice --preset T2P30 --cells 2x2x1 --plates 1.28mm --quiet -o - \
 	| $(BIN)/latmpm-voxelize - --cell $${h}mm --ppc $$p --quiet -o $@
 
-$(eval $(call pipeline_post,$(TO_OUT)/column,$(call pipeline_label_runs,$(TO_OUT)/column,$(TO_COLUMN_ROWS)),--kind column,Trade-off: column t = 1.6 mm,$(TO_SRC)/column-notes.md))
-$(eval $(call pipeline_post,$(TO_OUT)/lattice,$(call pipeline_label_runs,$(TO_OUT)/lattice,$(TO_LATTICE_ROWS)),--kind compression --fit-range 0.3mm:1mm,Trade-off: T2P30 2x2x1,$(TO_SRC)/lattice-notes.md))
+$(eval $(call pipeline_post,$(TO_OUT)/column,$(call pipeline_label_runs,$(TO_OUT)/column,$(TO_COLUMN_ROWS)),--kind column --reference ref --reference base,Trade-off: column t = 1.6 mm,$(TO_SRC)/column-notes.md))
+$(eval $(call pipeline_post,$(TO_OUT)/lattice,$(call pipeline_label_runs,$(TO_OUT)/lattice,$(TO_LATTICE_ROWS)),--kind compression --fit-range 0.3mm:1mm --reference ref --reference base,Trade-off: T2P30 2x2x1,$(TO_SRC)/lattice-notes.md))
 
-# Errors against the reference runs and the Euler load (0.4961 N, K = 0.5), the table and
-# the Pareto plot.
+# The table and the Pareto plot: each run's cost (status.toml) and its errors against the
+# reference run, the base case and the Euler load (latmpm-post --reference: comparison.csv).
 $(eval $(call pipeline_args,$(TO_OUT)/knobs.txt,$(foreach r,$(TO_COLUMN_ROWS),column:$(call pipeline_field,$r,1)) \
   $(foreach r,$(TO_LATTICE_ROWS),lattice:$(call pipeline_field,$r,1))))
 $(TO_OUT)/summary.md: $(TO_OUT)/knobs.txt $(TO_OUT)/column/summary.md $(TO_OUT)/lattice/summary.md \
-                      $(TO_SRC)/errors.sh $(TO_SRC)/report.sh $(TO_SRC)/column.txt $(TO_SRC)/lattice.txt
+                      $(TO_SRC)/report.sh $(TO_SRC)/column.txt $(TO_SRC)/lattice.txt
 	bash $(TO_SRC)/report.sh $(TO_OUT)
 
 .PRECIOUS: $(TO_OUT)/column/points-h%.h5 $(TO_OUT)/lattice/points-h%.h5

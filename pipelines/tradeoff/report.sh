@@ -3,13 +3,14 @@
 # pipelines/tradeoff.mk, one FAMILY:NAME per line, the reference run first in each family;
 # its cell, points per cell, shape, scheme, mass scaling and speed are its row of
 # pipelines/tradeoff/FAMILY.txt), its cost (OUT_DIR/FAMILY/run-NAME/status.toml) and its
-# errors against the reference (errors.sh). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
+# errors against the reference and the base case, as latmpm-post computed them
+# (OUT_DIR/FAMILY/comparison.csv, latmpm-post --reference ref --reference base; definitions in
+# docs/post.md "Comparing runs"). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
 # pareto.png, pareto.svg (when gnuplot is there) and OUT_DIR/summary.md.
 # usage: report.sh OUT_DIR
 set -euo pipefail
 out=$1
 here=$(dirname "$0")
-euler_column=0.4961   # N: pi^2 E I / (K L)^2, E = 10 MPa, t = 1.6 mm, L = 16 mm, K = 0.5
 csv="$out/errors.csv"
 echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status,curve_change_vs_base" > "$csv.tmp"
 # status KEY RUN_DIR: a value of RUN_DIR/status.toml (latmpm-solve), strings without quotes.
@@ -25,8 +26,6 @@ while IFS=: read -r family name; do
   shape=$(knob grid.shape); scheme=$(knob grid.scheme); scheme=${scheme:-usl}
   ms=$(knob time.mass_scaling)
   speed=$(knob bodies.top_plate.velocity | sed 's/.*"-\([0-9.]*\)mm\/s"\]$/\1/')
-  [ "$name" = ref ] && ref=$run
-  [ "$name" = ref ] && base="$out/$family/run-base"
   cost="$(status points "$run"),$(status steps "$run"),$(printf %.1f "$(status cpu_s "$run")"),$(printf %.1f "$(status wall_s "$run")")"
   ended=$(status status "$run")
   if [ "$ended" = failed ]; then
@@ -35,9 +34,10 @@ while IFS=: read -r family name; do
     change=""
     ended="failed at $(status reason "$run" | sed -n 's/^numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p')"
   else
-    errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
-    # The change against the base case isolates the knob from the base's own error.
-    change=$(bash "$here/errors.sh" "$base" "$run" "$family" 0 | cut -d, -f1)
+    # comparison.csv: reference,label,curve,peak,late,euler,ke_over_se. The change against the
+    # base case isolates the knob from the base's own error.
+    errors=$(awk -F, -v run="$name" '$1 == "ref" && $2 == run { print $3 "," $4 "," $5 "," $6 "," $7 }' "$out/$family/comparison.csv")
+    change=$(awk -F, -v run="$name" '$1 == "base" && $2 == run { print $3 }' "$out/$family/comparison.csv")
   fi
   echo "$family,$name,$cell,$ppc,$shape${scheme:+ ($scheme)},$ms,$speed,$cost,$errors,$ended,$change" >> "$csv.tmp"
 done < "$out/knobs.txt"
@@ -74,9 +74,9 @@ fi
   echo "Made by \`make tradeoff\` (pipelines/tradeoff.mk) on $(date -u +%Y-%m-%d). Cost: CPU time of"
   echo "the solver (user + system, one thread per run under \`make -j2\`) and wall time. Errors"
   echo "against each family's reference (\`ref\`, the finest run), definitions in"
-  echo "pipelines/tradeoff/errors.sh: curve = relative L2 difference of the binned"
-  echo "load-displacement curves; peak = peak load; late = post-buckling load (column) or work"
-  echo "∫F du (lattice); Euler = column post-buckling load against the Euler load 0.4961 N;"
+  echo "docs/post.md (\"Comparing runs\", computed by latmpm-post --reference): curve = relative L2"
+  echo "difference of the binned load-displacement curves; peak = peak load; late = post-buckling"
+  echo "load (column) or work ∫F du (lattice); Euler = column post-buckling load against the Euler load;"
   echo "KE/SE = largest kinetic / strain energy over the second half of the travel; curve change vs"
   echo "base = the curve error of the run against the base case (the knob's own effect)."
   echo
