@@ -77,10 +77,13 @@ pipeline_table = $(foreach r,$(3),$(if $(filter -,$(call pipeline_field,$r,3)),,
 # $(call pipeline_run,RUN_DIR,POINTS,SCENE,SET_WORDS[,ALLOW_FAILURE]): one run outside a case
 # table (RUN_DIR of SCENE with the point file POINTS and further words such as
 # --set grid.cell=0.4mm).
+# (pipelines/stl-part.mk adds its further point files to the stamp's old name, wall_time.txt:
+# they are made first, order-only, until it names RUN_DIR/done.)
 define pipeline_run
 $(call pipeline_args,$(1).args,$(3) --set points.0.file=$(2) $(4))
-$(1)/done: $(1).args $(2) $(3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh
+$(1)/done: $(1).args $(2) $(3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh $(1)/wall_time.txt
 	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1) $$(SOLVE_THREADS) $(5)
+$(1)/wall_time.txt: ;
 endef
 
 # $(call pipeline_post,OUT_DIR,RUNS,POST_ARGS,TITLE,NOTES): latmpm-post over the runs into
