@@ -1,6 +1,7 @@
 // latmpm-post's outputs for a set of analysed runs, all in one directory:
 //   curves/<run>.load_displacement.csv, curves/<run>.load_time.csv   (mm, N, ms)
 //   metrics.csv                                                      (one row per run)
+//   checks.csv            (one row per run: energy balance, KE/SE, load ripple; run_checks.hpp)
 //   comparison.csv        (with references: each run's errors against each; run_comparison.hpp)
 //   plots/<figure>.gp, .png, .svg                                    (gnuplot; the .gp stays)
 //   summary.md                                                       (runs, metrics, plots, notes)

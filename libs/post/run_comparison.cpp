@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "post/curve.hpp"
 #include "post/post_report.hpp"
+#include "post/run_checks.hpp"
 
 namespace latmpm::post {
 
@@ -14,19 +15,6 @@ namespace {
 
 double peak(const std::vector<double>& load) {
   return load.empty() ? RunComparison::none : *std::max_element(load.begin(), load.end());
-}
-
-// max KE/SE over the rows at or beyond half of the last row's travel, where SE > 0.
-double kinetic_over_strain(const RunAnalysis& a) {
-  const SeriesTable& s = a.run.series;
-  if (!s.has("kinetic_energy") || !s.has("strain_energy") || a.history.displacement.empty()) return RunComparison::none;
-  const auto& ke = s.column("kinetic_energy", a.run.path);
-  const auto& se = s.column("strain_energy", a.run.path);
-  const auto& u = a.history.displacement;
-  double ratio = 0;
-  for (size_t i = 0; i < u.size() && i < ke.size(); ++i)
-    if (u[i] >= 0.5 * u.back() && se[i] > 0) ratio = std::max(ratio, ke[i] / se[i]);
-  return ratio;
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 //                otherwise the work W = int F du (trapezoid rule) against the reference's
 //   euler_error  column: post-buckling load / Euler load - 1 (ColumnMetrics); NaN otherwise
 //   ke_over_se   the largest kinetic / strain energy ratio over the second half of the run's
-//                travel: small when the run is quasi-static (NaN without those columns)
+//                travel: small when the run is quasi-static (run_checks.hpp; NaN without them)
 #pragma once
 #include <limits>
 #include <string>
