@@ -43,7 +43,7 @@ updates per second, points and peak memory. Pipelines read it, not the log.
 one name a line: ask the tool, not the docs.
 
 Exit status: 0 done, 1 usage, 2 bad scene or points (FILE:LINE: key: problem; nothing
-written but status.toml into a run directory that exists), 3 numerical failure (the log says why; series and snapshots so far are kept).
+written), 3 numerical failure (the log says why; series and snapshots so far are kept).
 
 Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm grid):
   $ latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5
