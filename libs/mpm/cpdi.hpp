@@ -10,6 +10,7 @@
 // integrals are exact (points/hexahedron.hpp). The stencil is the box of grid nodes the eight
 // vertices touch, so its size varies with the domain's extent.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "mpm/real.hpp"
@@ -35,5 +36,20 @@ HexVertices convected_vertices(const Vec3& position, const Mat3& F, const HexVer
 // Eq. 7 for a domain with these (current) vertices on a grid of spacing h (m). Throws
 // NumericalError for an inverted domain (det J ≤ 0 somewhere).
 CpdiStencil cpdi_stencil(const HexVertices& vertices, Real cell_size);
+
+// What a CPDI1 particle keeps of its reference domain. Because the domain deforms
+// affinely with F, its integrals follow without new quadrature: v = J v0, ∫Q_α dv = J ∫Q_α dV,
+// ∫grad Q_α dv = J F⁻ᵀ ∫Grad Q_α dV; the J cancels against 1/v in Eq. 7.
+struct CpdiDomain {
+  HexVertices offsets;                        // X_α − X_p (X_p the centroid), m
+  std::array<Real, 8> weight_fraction{};      // ∫Q_α dV / V0
+  std::array<Vec3, 8> gradient_per_volume;    // ∫Grad Q_α dV / V0, 1/m
+  Real volume = 0;                            // V0, m³
+};
+// Throws NumericalError for an inverted hexahedron.
+CpdiDomain make_cpdi_domain(const HexVertices& reference_vertices);
+// Eq. 7 for the domain convected to `position` with deformation gradient F (same result as
+// cpdi_stencil(convected_vertices(...)) to rounding, without the quadrature).
+CpdiStencil cpdi_stencil(const CpdiDomain& domain, const Vec3& position, const Mat3& F, Real cell_size);
 
 }  // namespace latmpm::mpm

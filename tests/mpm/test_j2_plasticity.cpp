@@ -204,6 +204,8 @@ TEST_CASE("Simple shear matches a finely stepped integration of the rate form", 
   f(0, 1) = gamma_end / steps;
   J2Update u;
   for (int k = 0; k < steps; ++k) u = j2_update(p, f, state), state = u.state;
+  INFO("relative stress error " << relative(u.kirchhoff, kirchhoff_of(p, ref.be)) << ", alpha " << state.plastic_arc_length
+                                 << " against " << ref.alpha);
   CHECK(relative(u.kirchhoff, kirchhoff_of(p, ref.be)) <= 1e-6);
   CHECK(std::abs(state.plastic_arc_length / ref.alpha - 1) <= 1e-6);
 }
