@@ -1,5 +1,5 @@
 // Material parameters of a body, as a scene gives them. The constitutive models themselves
-// live in linear_elastic.hpp and neo_hookean.hpp.
+// live in linear_elastic.hpp, neo_hookean.hpp and j2_material.hpp.
 #pragma once
 #include <string>
 
