@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "levelset/level_set_units.hpp"
 #include "mesh/mesh_checks.hpp"
 
 namespace latmpm {
@@ -38,7 +39,8 @@ openvdb::FloatGrid::Ptr shells_level_set(const TriangleMesh& mesh, const std::ve
   std::vector<openvdb::Vec3s> points;
   points.reserve(mesh.vertices.size());
   for (const auto& v : mesh.vertices)
-    points.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
+    points.emplace_back(static_cast<float>(v.x() * grid_units_per_metre), static_cast<float>(v.y() * grid_units_per_metre),
+                        static_cast<float>(v.z() * grid_units_per_metre));
   std::vector<openvdb::Vec3I> triangles;
   triangles.reserve(mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f)
@@ -53,11 +55,11 @@ openvdb::FloatGrid::Ptr shells_level_set(const TriangleMesh& mesh, const std::ve
 openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_size_m,
                                        double half_width_voxels,
                                        const std::function<void(double)>& progress) {
-  if (!(voxel_size_m > 0) || !std::isfinite(voxel_size_m))
-    throw InputError("voxelize", "voxel size", "must be positive");
+  if (!(voxel_size_m >= smallest_voxel_m) || !std::isfinite(voxel_size_m))
+    throw InputError("voxelize", "voxel size", "must be at least 0.1 um");
   if (!(half_width_voxels >= 1)) throw InputError("voxelize", "band half-width", "must be at least 1 voxel");
   openvdb::initialize();
-  const auto xform = openvdb::math::Transform::createLinearTransform(voxel_size_m);
+  const auto xform = level_set_transform(voxel_size_m);
   ProgressInterrupter interrupter(progress);
   const auto half_width = static_cast<float>(half_width_voxels);
 
@@ -89,7 +91,7 @@ openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_si
     else openvdb::tools::csgUnion(*grid, *part);
     first = last;
   }
-  if (!grid) grid = openvdb::FloatGrid::create(float(half_width_voxels * voxel_size_m));
+  if (!grid) grid = openvdb::FloatGrid::create(float(half_width_voxels * voxel_size_m * grid_units_per_metre));
   if (progress) progress(1.0);
   return grid;
 }

@@ -1,5 +1,6 @@
 // A closed triangle mesh as an OpenVDB narrow-band level set (tools::meshToLevelSet):
-// signed distance in metres, negative inside, interior resolved, voxel (i, j, k) centred at
+// signed distance in grid units (mm, levelset/level_set_units.hpp), negative inside,
+// interior resolved, cavities kept (inner shells facing inward), voxel (i, j, k) centred at
 // (i, j, k)·voxel_size like strut_graph_level_set. The mesh must enclose a volume
 // (check_mesh(...).encloses_volume()): an open mesh breaks the inside/outside classification.
 #pragma once

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/errors.hpp"
+#include "levelset/level_set_units.hpp"
 #include "mesh/mesh_checks.hpp"
 
 namespace latmpm {
@@ -81,6 +82,12 @@ ResourceEstimate estimate_resources(const StrutGraph& graph, const VoxelizeOptio
 void check_resources(const ResourceEstimate& e, const VoxelizeOptions& o, double max_bytes,
                      const std::string& where, const std::string& hint) {
   const std::string extent = "extent " + describe_extent(e.bounds);
+  if (o.resolved_voxel_size() < smallest_voxel_m) {
+    char text[160];
+    std::snprintf(text, sizeof text, "level-set voxel %.3g um (from --cell, --ppc, --voxel) is below the smallest, 0.1 um",
+                  o.resolved_voxel_size() * 1e6);
+    throw InputError(where, "voxel", text);
+  }
   if (!(e.largest_index < max_index_extent)) {
     char text[200];
     std::snprintf(text, sizeof text, "reaches %.3g voxels of %.3g mm from the origin, beyond the %.3g a level set can index; ",

@@ -1,7 +1,8 @@
 // Real parts as users bring them (issue 20): a hollow part keeps its cavity, a CAD export
 // with near-coincident corners is welded, a lattice clipped at its box is capped exactly, a
 // part in metres read as millimetres is refused with its extent and the unit it needs, absurd
-// numbers are refused before anything is allocated, --place stands a part on z = 0. Every
+// numbers are refused before anything is allocated, --place stands a part on z = 0, a
+// micro-strut voxelizes at 5 um cells. Every
 // STL is generated here, in a fresh scratch directory per test.
 #include <catch2/catch.hpp>
 
@@ -18,6 +19,8 @@
 #include <string>
 
 #include "core/hdf5_file.hpp"
+#include "geometry/column.hpp"
+#include "levelset/strut_surface.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/primitive_meshes.hpp"
 #include "mesh/stl_file.hpp"
@@ -285,4 +288,26 @@ TEST_CASE("latmpm-voxelize --place centres a part on x = y = 0 and stands it on 
   CHECK(box.max().y() == Approx(0.003).margin(1e-12));
   CHECK(box.min().z() == Approx(0.0).margin(1e-12));
   CHECK(box.max().z() == Approx(0.008).margin(1e-12));
+}
+
+TEST_CASE("A micro-strut (0.1 mm across) voxelizes at 5 um cells from its graph and its STL", "[voxelize]") {
+  // OpenVDB refused voxels under 14 um while grids were in metres ("Non-zero scale values
+  // required"). Column: 0.1 mm across, 0.4 mm long, flat ends: π (0.05 mm)² 0.4 mm.
+  ColumnSpec spec;
+  spec.diameter = 0.1e-3;
+  spec.length = 0.4e-3;
+  const StrutGraph column = build_column(spec);
+  const double exact = M_PI * 0.05e-3 * 0.05e-3 * 0.4e-3;
+  VoxelizeOptions o;
+  o.cell_size = 5e-6;  // Δ = 5 µm, level-set voxel 2.5 µm
+  o.ppc = 1;
+  const Voxelized from_graph = voxelize_strut_graph(column, o);
+  CHECK(from_graph.points.size() > 20000);
+  CHECK(total_volume(from_graph.points) == Approx(exact).epsilon(0.005));
+  // Its surface as latmpm-lattice --stl writes it (voxel t/10 = 10 µm), voxelized again.
+  const TriangleMesh surface = strut_graph_surface(column, 10e-6);
+  const MeshReport mesh = check_mesh(surface, false);
+  REQUIRE(mesh.closed());
+  CHECK(mesh.volume == Approx(exact).epsilon(0.03));  // the surface at 5 voxels per radius
+  CHECK(total_volume(voxelize_mesh(surface, "part", o).points) == Approx(mesh.volume).epsilon(0.005));
 }
