@@ -4,6 +4,7 @@
 // texts live here too, so the tool stays thin and the parsing is tested.
 #pragma once
 #include <Eigen/Geometry>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct Placement {
   std::vector<AxisRotation> rotations;  // applied in order
   bool place = false;  // after rotating: bounding box centred on x = y = 0, lowest point z = 0
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // m
+  // Last: shift along z so that the lowest point is at this height (m), e.g. the top of
+  // another part's points (a platen standing on the specimen). NaN: not used.
+  double stand_on_z = std::numeric_limits<double>::quiet_NaN();
 
   // Scale, rotations and translation; `place` depends on the mesh (place_mesh applies it).
   Eigen::Affine3d transform() const;

@@ -1,6 +1,8 @@
 // latmpm-voxelize: geometry (a strut graph from latmpm-lattice, or an STL part) → material
 // points on the solver's grid. Method and accuracy: docs/voxelize.md; file: docs/formats.md.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -31,7 +33,8 @@ const char* manual = R"(latmpm-voxelize: turn a lattice (or an STL part) into ma
 Input: a strut graph written by latmpm-lattice (a file, or - for stdin), or an STL file
 (ASCII or binary) with --units for its length unit; --scale, --rotate, --place and
 --translate place an STL part (scale, then rotations in order, then --place centres it on
-x = y = 0 and stands it on z = 0, then translation; z is the compression axis). An OpenVDB level set is built straight from the strut graph's capsule distances, or
+x = y = 0 and stands it on z = 0, then translation, then --stand-on shifts it in z onto
+the top of another point set; z is the compression axis). An OpenVDB level set is built straight from the strut graph's capsule distances, or
 from the mesh (meshToLevelSet), and ppc^3 points per grid cell of size --cell are placed
 on the solver's lattice (grid nodes at i*h, points at (i + (k + 1/2)/ppc)*h) inside the
 solid. Points at the surface carry the fraction of their sub-cell inside the solid, so the
@@ -66,6 +69,8 @@ void declare_options(latmpm::CommandLine& cl) {
   cl.repeated_option("rotate", "AXIS:ANGLE", "STL: rotate about x, y or z, e.g. x:90deg (repeatable, in order)");
   cl.flag("place", "STL: after rotating, centre the part on x = y = 0 and stand it on z = 0");
   cl.option("translate", "X,Y,Z", "STL: translation after scaling, rotating and --place, e.g. 0mm,0mm,5mm");
+  cl.option("stand-on", "POINTS", "STL: last, shift along z to stand on the top of this point set's points "
+                                  "(e.g. a platen on the specimen)");
   cl.option("body", "NAME", "STL: body name of the part", "part");
   cl.flag("repair", "STL: fix what CGAL can (stitch, orient, drop degenerate faces, fill small holes)");
   cl.flag("no-self-intersection-check", "STL: skip the (slowest) check for self-intersections");
@@ -90,6 +95,16 @@ bool is_hdf5(const std::string& path) {
   return in.gcount() == 8 && std::string(head, 8) == std::string("\x89HDF\r\n\x1a\n", 8);
 }
 
+// The highest point of a point set's sub-cells (m): where a part standing on it begins.
+double points_top(const std::string& path) {
+  using namespace latmpm;
+  const PointSet points = read_point_set(Hdf5File(path, Hdf5File::Mode::read));
+  if (points.size() == 0) throw InputError("--stand-on", path, "holds no points");
+  double top = -INFINITY;
+  for (size_t i = 0; i < points.size(); ++i) top = std::max(top, points.position[i].z() + points.half_size[i].z());
+  return top;
+}
+
 double stl_metres_per_unit(const latmpm::CommandLine& cl) {
   using namespace latmpm;
   if (!cl.given("units")) throw InputError("--units", "", "required for STL input (the file's length unit, e.g. mm)");
@@ -104,6 +119,7 @@ latmpm::TriangleMesh load_part(const latmpm::CommandLine& cl, const latmpm::Inpu
   if (!(placement.scale > 0)) throw InputError("--scale", "", "must be a positive factor");
   for (const std::string& r : cl.all("rotate")) placement.rotations.push_back(parse_axis_rotation(r, "--rotate"));
   placement.place = cl.flag_set("place");
+  if (cl.given("stand-on")) placement.stand_on_z = points_top(cl.text("stand-on"));
   if (cl.given("translate")) placement.translation = parse_length_vector(cl.text("translate"), "--translate");
   place_mesh(mesh, placement);
 
@@ -202,7 +218,7 @@ int run(int argc, char** argv) {
   Voxelized result;
   std::string extent, hint;
   if (is_hdf5(input.path())) {
-    refuse(cl, {"units", "rotate", "place", "translate", "body", "repair", "no-self-intersection-check"},
+    refuse(cl, {"units", "rotate", "place", "translate", "stand-on", "body", "repair", "no-self-intersection-check"},
            "applies only to STL input");
     if (cl.text("scale") != "1") throw InputError("--scale", "", "applies only to STL input");
     const Hdf5File file(input.path(), Hdf5File::Mode::read);
