@@ -14,30 +14,39 @@ namespace {
 std::string mm(double metres) { return format_millimetres(metres, 3); }
 
 // The first local maximum after index `from` followed by a relative drop of at least `drop`
-// before the curve climbs above it again; returns the index or -1.
-long first_peak(const Curve& c, double drop, size_t from = 0) {
+// before the curve climbs above it again, and not climbed above again within `persist` of
+// travel (ringing, not a failing structure); returns the index or -1.
+long first_peak(const Curve& c, double drop, size_t from = 0, double persist = 0) {
   for (size_t k = from + 1; k + 1 < c.size(); ++k) {
     if (!(c.y[k] >= c.y[k - 1] && c.y[k] > c.y[k + 1]) || c.y[k] <= 0) continue;
     double lowest = c.y[k];
-    for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k]; ++j) lowest = std::min(lowest, c.y[j]);
-    if (lowest <= (1 - drop) * c.y[k]) return long(k);
+    size_t j = k + 1;
+    for (; j < c.size() && c.y[j] <= c.y[k]; ++j) lowest = std::min(lowest, c.y[j]);
+    if (lowest > (1 - drop) * c.y[k]) continue;
+    if (j < c.size() && c.x[j] - c.x[k] <= persist) continue;
+    return long(k);
   }
   return -1;
 }
 
 // The start-up transient on the binned curve: a first peak within `window` of the start is
-// the spike of a platen set moving at once (the quasi-static response cannot peak that
+// a spike of the platen set moving at once (the quasi-static response cannot peak that
 // early); it ends at the lowest load after the spike, searched until the curve climbs above
-// the spike again or two windows on. Returns that index, or 0 when there is no such spike.
+// the spike again or two windows on. The ringing repeats: spike after spike within the window
+// belongs to the transient. Returns the index where it ends, or 0 when there is no spike.
 size_t transient_end(const Curve& c, double drop, double window) {
   if (!(window > 0)) return 0;
-  const long spike = first_peak(c, drop);
-  if (spike < 0 || c.x[size_t(spike)] - c.x.front() > window) return 0;
-  const size_t k = size_t(spike);
-  size_t lowest = k;
-  for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k] && c.x[j] - c.x.front() <= 2 * window; ++j)
-    if (c.y[j] < c.y[lowest]) lowest = j;
-  return lowest;
+  size_t settled = 0;
+  for (;;) {
+    const long spike = first_peak(c, drop, settled);
+    if (spike < 0 || c.x[size_t(spike)] - c.x.front() > window) return settled;
+    const size_t k = size_t(spike);
+    size_t lowest = k;
+    for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k] && c.x[j] - c.x.front() <= 2 * window; ++j)
+      if (c.y[j] < c.y[lowest]) lowest = j;
+    if (lowest == k) return settled;
+    settled = lowest;
+  }
 }
 
 }  // namespace
@@ -74,7 +83,7 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
   // The start-up transient, excluded from everything but the energy.
   const double window = std::isfinite(s.transient_window) ? s.transient_window
                         : have_gauge                      ? 0.01 * gauge
-                                                          : 0.05 * travel;
+                                                          : 0.1 * travel;
   const size_t settled = transient_end(binned, s.first_peak_drop, window);
   if (settled > 0) {
     m.transient_end = binned.x[settled];
@@ -94,7 +103,7 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
       break;
     }
 
-  const long fp = first_peak(binned, s.first_peak_drop, settled);
+  const long fp = first_peak(binned, s.first_peak_drop, settled, window);
   if (fp >= 0) {
     m.first_peak_load = binned.y[size_t(fp)];
     m.first_peak_displacement = binned.x[size_t(fp)];
@@ -146,7 +155,8 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
     if (std::isfinite(eta[i]) && binned.y[i] >= 0.1 * highest && (best < 0 || eta[i] > eta[size_t(best)]))
       best = long(i);
   }
-  if (best < 0 || size_t(best) + 1 >= eta.size()) {
+  // A maximum within the last transient window is the end of the run, not an onset.
+  if (best < 0 || size_t(best) + 1 >= eta.size() || binned.x.back() - binned.x[size_t(best)] < window) {
     m.notes.push_back("densification onset: not reached (the energy efficiency still rises at the end of the run)");
   } else {
     m.densification_displacement = binned.x[size_t(best)];

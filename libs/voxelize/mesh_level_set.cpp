@@ -35,26 +35,27 @@ namespace {
 
 openvdb::FloatGrid::Ptr shells_level_set(const TriangleMesh& mesh, const std::vector<int32_t>& shell,
                                          const std::vector<char>& take, const openvdb::math::Transform& xform,
-                                         float half_width, openvdb::util::NullInterrupter& interrupter) {
+                                         float half_width, float interior_half_width,
+                                         openvdb::util::NullInterrupter& interrupter) {
+  // The adapter takes index-space points (meshToLevelSet converts them itself).
   std::vector<openvdb::Vec3s> points;
   points.reserve(mesh.vertices.size());
   for (const auto& v : mesh.vertices)
-    points.emplace_back(static_cast<float>(v.x() * grid_units_per_metre), static_cast<float>(v.y() * grid_units_per_metre),
-                        static_cast<float>(v.z() * grid_units_per_metre));
+    points.emplace_back(xform.worldToIndex(openvdb::Vec3d(v.x(), v.y(), v.z()) * grid_units_per_metre));
   std::vector<openvdb::Vec3I> triangles;
   triangles.reserve(mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f)
     if (take[size_t(shell[f])]) triangles.emplace_back(mesh.triangles[f][0], mesh.triangles[f][1], mesh.triangles[f][2]);
-  std::vector<openvdb::Vec4I> no_quads;
-  return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(interrupter, xform, points, triangles, no_quads,
-                                                            half_width);
+  const openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
+  return openvdb::tools::meshToVolume<openvdb::FloatGrid>(interrupter, adapter, xform, half_width, interior_half_width);
 }
 
 }  // namespace
 
 openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_size_m,
                                        double half_width_voxels,
-                                       const std::function<void(double)>& progress) {
+                                       const std::function<void(double)>& progress,
+                                       double interior_half_width_voxels) {
   if (!(voxel_size_m >= smallest_voxel_m) || !std::isfinite(voxel_size_m))
     throw InputError("voxelize", "voxel size", "must be at least 0.1 um");
   if (!(half_width_voxels >= 1)) throw InputError("voxelize", "band half-width", "must be at least 1 voxel");
@@ -62,6 +63,7 @@ openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_si
   const auto xform = level_set_transform(voxel_size_m);
   ProgressInterrupter interrupter(progress);
   const auto half_width = static_cast<float>(half_width_voxels);
+  const auto interior_half_width = static_cast<float>(std::max(half_width_voxels, interior_half_width_voxels));
 
   // meshToLevelSet decides inside and outside by flood fill from the outside, so a cavity
   // (an inner shell facing inward) would come out solid. Shells are therefore taken in
@@ -85,7 +87,7 @@ openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_si
     while (last < shells && is_cavity(order[last]) == is_cavity(order[first])) ++last;
     std::vector<char> take(shells, 0);
     for (size_t i = first; i < last; ++i) take[order[i]] = 1;
-    auto part = shells_level_set(mesh, shell, take, *xform, half_width, interrupter);
+    auto part = shells_level_set(mesh, shell, take, *xform, half_width, interior_half_width, interrupter);
     if (!grid) grid = part;
     else if (is_cavity(order[first])) openvdb::tools::csgDifference(*grid, *part);
     else openvdb::tools::csgUnion(*grid, *part);

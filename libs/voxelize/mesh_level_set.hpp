@@ -14,8 +14,11 @@ namespace latmpm {
 
 // `progress(fraction_done)` is called now and then. Throws InputError("voxelize", ...) for a
 // non-positive voxel size or band.
+// `interior_half_width_voxels`: depth of the band inside (0: as outside), e.g. deeper to
+// measure thin features (thin_features.hpp).
 openvdb::FloatGrid::Ptr mesh_level_set(const TriangleMesh& mesh, double voxel_size_m,
                                        double half_width_voxels = 3.0,
-                                       const std::function<void(double)>& progress = {});
+                                       const std::function<void(double)>& progress = {},
+                                       double interior_half_width_voxels = 0);
 
 }  // namespace latmpm

@@ -25,7 +25,7 @@ constexpr double bytes_per_band_voxel = 24;
 void finish(ResourceEstimate& e, const VoxelizeOptions& o) {
   const double spacing = o.spacing(), voxel = o.resolved_voxel_size();
   e.points = e.volume / (spacing * spacing * spacing);
-  e.band_voxels = e.area / (voxel * voxel) * 2 * o.band_half_width();
+  e.band_voxels = e.area / (voxel * voxel) * (o.band_half_width() + o.interior_band_half_width());
   e.bytes = bytes_per_point * e.points + bytes_per_band_voxel * e.band_voxels;
   const double reach = std::max(e.bounds.min().cwiseAbs().maxCoeff(), e.bounds.max().cwiseAbs().maxCoeff());
   e.largest_index = reach / voxel;

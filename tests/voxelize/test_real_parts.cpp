@@ -311,3 +311,32 @@ TEST_CASE("A micro-strut (0.1 mm across) voxelizes at 5 um cells from its graph 
   CHECK(mesh.volume == Approx(exact).epsilon(0.03));  // the surface at 5 voxels per radius
   CHECK(total_volume(voxelize_mesh(surface, "part", o).points) == Approx(mesh.volume).epsilon(0.005));
 }
+
+TEST_CASE("Walls and struts thinner than two cells are measured; thick parts are not flagged", "[voxelize]") {
+  VoxelizeOptions o;
+  o.cell_size = 0.4e-3;  // two cells: 0.8 mm
+  o.ppc = 2;
+  // A 0.5 mm plate, flat and tilted (30° about x, then 20° about y): 0.5 mm, 0.3 mm short.
+  const TriangleMesh plate = box_mesh({0, 0, 0}, {0.01, 0.01, 0.0005});
+  const ThinFeatures flat = voxelize_mesh(plate, "part", o).thin;
+  CHECK(flat.any());
+  CHECK(flat.thinnest == Approx(0.5e-3).margin(1e-6));
+  TriangleMesh tilted = plate;
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(20 * M_PI / 180, Eigen::Vector3d::UnitY()) *
+                                Eigen::AngleAxisd(30 * M_PI / 180, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  for (auto& v : tilted.vertices) v = turn * v;
+  const ThinFeatures oblique = voxelize_mesh(tilted, "part", o).thin;
+  CHECK(oblique.any());
+  // Within a level-set voxel (0.1 mm), on the low side.
+  CHECK(oblique.thinnest <= 0.5e-3 + 1e-6);
+  CHECK(oblique.thinnest >= 0.5e-3 - 0.1e-3);
+  CHECK_THAT(describe(flat, o.cell_size), Catch::Contains("0.3 mm more"));
+  // Thick solids with convex edges and corners: a cube, a hollow cube's 3 mm walls, a cylinder.
+  TriangleMesh hollow = box_mesh({0, 0, 0}, {0.01, 0.01, 0.01});
+  append(hollow, inward(box_mesh({0.003, 0.003, 0.003}, {0.007, 0.007, 0.007})));
+  for (const TriangleMesh& thick : {box_mesh({0, 0, 0}, {0.005, 0.006, 0.004}), hollow,
+                                    cylinder_mesh({0, 0, 0}, 0.002, 0.005, 48)}) {
+    const ThinFeatures t = voxelize_mesh(thick, "part", o).thin;
+    CHECK_FALSE(t.any());
+  }
+}

@@ -234,6 +234,9 @@ int run(int argc, char** argv) {
                                      "a larger --ppc, or --force");
     if (resolution.verdict == StrutResolution::Verdict::coarse)
       std::cerr << "latmpm-voxelize: warning: fewer than 3 points across the thinnest strut: bending will be too stiff\n";
+    if (resolution.has_struts && resolution.cells_across < 2)
+      std::cerr << "latmpm-voxelize: warning: thin struts: " << describe(resolution) << ", "
+                << mm(2 * options.cell_size - resolution.diameter) << " below two cells: volume and stiffness errors grow\n";
     const ResourceEstimate estimate = estimate_resources(graph, options);
     check_resources(estimate, options, max_memory, input.display_name());
     if (report) std::cerr << "  extent " << describe_extent(estimate.bounds) << "\n";
@@ -248,6 +251,9 @@ int run(int argc, char** argv) {
     extent = describe_extent(estimate.bounds);
   }
   if (progress) progress->finish();
+  if (result.thin.any())
+    std::cerr << "latmpm-voxelize: warning: thin features: " << describe(result.thin, options.cell_size)
+              << ": volume and stiffness errors grow\n";
   if (result.points.size() == 0)
     throw InputError(input.display_name(), "volume",
                      "the solid has zero volume at this resolution: no point inside (extent " + extent + ")" +
