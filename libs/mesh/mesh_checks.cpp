@@ -12,9 +12,10 @@
 #include <array>
 #include <cmath>
 #include <iterator>
-#include <numeric>
 #include <sstream>
 #include <vector>
+
+#include "core/disjoint_sets.hpp"
 
 namespace latmpm {
 namespace {
@@ -125,22 +126,14 @@ double signed_volume(const TriangleMesh& mesh) {
 }
 
 size_t shell_of_triangles(const TriangleMesh& mesh, std::vector<int32_t>& shell) {
-  std::vector<int32_t> parent(mesh.vertices.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  DisjointSets<int32_t> sets(mesh.vertices.size());
   for (const auto& t : mesh.triangles)
-    for (int k = 1; k < 3; ++k) {
-      const int32_t a = find(t[0]), b = find(t[k]);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+    for (int k = 1; k < 3; ++k) sets.join(t[0], t[k]);
   std::vector<int32_t> number(mesh.vertices.size(), -1);
   size_t shells = 0;
   shell.resize(mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    int32_t& n = number[find(mesh.triangles[f][0])];
+    int32_t& n = number[sets.find(mesh.triangles[f][0])];
     if (n < 0) n = static_cast<int32_t>(shells++);
     shell[f] = n;
   }

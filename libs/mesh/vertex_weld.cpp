@@ -6,26 +6,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <numeric>
 #include <unordered_map>
 #include <vector>
 
+#include "core/disjoint_sets.hpp"
+
 namespace latmpm {
 namespace {
-
-// Union-find over vertex indices, the smaller index as representative.
-struct Clusters {
-  std::vector<int32_t> parent;
-  explicit Clusters(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int32_t find(int32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  }
-  void join(int32_t a, int32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 struct CellHash {
   size_t operator()(const Eigen::Vector3i& c) const {
@@ -56,7 +43,7 @@ WeldReport weld_nearby_vertices(TriangleMesh& mesh, double relative_tolerance) {
   };
   const auto n = static_cast<int32_t>(mesh.vertices.size());
   for (int32_t v = 0; v < n; ++v) cells[cell_of(mesh.vertices[v])].push_back(v);
-  Clusters clusters(mesh.vertices.size());
+  DisjointSets<int32_t> clusters(mesh.vertices.size());
   const double tol2 = tol * tol;
   for (int32_t v = 0; v < n; ++v) {
     const Eigen::Vector3i c = cell_of(mesh.vertices[v]);
