@@ -23,10 +23,9 @@ pipeline_space := $(subst ,, )
 # Capabilities are asked of the solver, once per make and only when a table is read: the
 # shape functions it has (`latmpm-solve --list shapes`; an older solver without --list: ugimp).
 LATMPM_SHAPES = $(eval LATMPM_SHAPES := $$(or $$(shell $(BIN)/latmpm-solve --list shapes 2>/dev/null),ugimp))$(LATMPM_SHAPES)
-# DDMP (paper A Eq. 4-7) runs were measured 15-30x slower than uGIMP (docs/experiments.md), so
-# QUICK=1 leaves its rows out unless DDMP=1; the paper-resolution default includes them
-# (DDMP=0 leaves them out).
-DDMP ?= $(if $(QUICK),0,1)
+# DDMP (paper A Eq. 4-7) rows run in every experiment, QUICK=1 included (docs/solver.md, "DDMP";
+# DDMP=0 leaves them out).
+DDMP ?= 1
 
 # $(call pipeline_rows,TABLE,DDMP_FLAG): the rows of TABLE as words case|points|scene (scene
 # "-": a run reused from another table), without the rows whose shape the solver lacks, nor

@@ -1,6 +1,6 @@
 # make impact [QUICK=1]: paper A Sec. 6, a rigid flyer strikes a tetrahedral lattice.
 #   T2P30, E = 10 MPa, nu = 0.4, real density rho0 = 1050 kg/m^3, shape in {uGIMP, DDMP}
-#   (DDMP with its default MUSL; DDMP=0 leaves it out),
+#   (DDMP with USL, its default; DDMP=0 leaves it out),
 #   flyer 10 kg at 2 m/s, gravity 9.81 m/s^2 on flyer and lattice, bottom plate held,
 #   5x5x5 cells, 3 mm plates, cell 0.64 mm, 2 points per cell per direction, 25 ms.
 #   QUICK=1: 2x2x2 cells, 2 mm plates, cell 1 mm, 20 ms, and the flyer's mass scaled with the
@@ -25,7 +25,7 @@ IM_CELLS  := $(if $(QUICK),2x2x2,5x5x5)
 IM_PLATES := $(if $(QUICK),2mm,3mm)
 
 # Both shapes at either resolution (the issue asks for uGIMP and DDMP), unless DDMP=0 is
-# given on the command line (pipelines/common.mk leaves DDMP out of QUICK by default).
+# given on the command line.
 IM_DDMP     := $(if $(filter command line,$(origin DDMP)),$(DDMP),1)
 IM_ROWS     := $(call pipeline_rows,$(IM_SRC)/cases-$(IM_MODE).txt,$(IM_DDMP))
 $(call pipeline_table,$(IM_OUT),$(IM_SRC)/cases-$(IM_MODE).txt,$(IM_ROWS))

@@ -25,9 +25,6 @@ struct BucketBuffer {
 
   std::vector<Real> data = std::vector<Real>(size_t(width) * width * width * lane::count);
   std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
-  // DDMP only (cell_occupancy.hpp): 1 for each cell of the buffer (named by its lowest
-  // node, same indexing as the nodes without lanes) that holds deformable material.
-  std::vector<uint8_t> occupied;
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
   // DDMP on the grid only (ddmp_grid.hpp): ddmp_values per node, allocated on first use.
   std::vector<Real> ddmp;

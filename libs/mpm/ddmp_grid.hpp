@@ -1,48 +1,58 @@
-// DDMP's smoothed gradient evaluated on the grid (Paper A Eq. 4, the paper's own practice):
-// the per-particle sum over 4×4×4 nodes of Eq. 7 is split into a particle part on the
-// particle's 8 cell corners and a grid pass over the cells of Ω.
+// DDMP's smoothed gradient evaluated on the grid (Paper A Eq. 4, the paper's own practice),
+// and the DDMP group's treatment of nodes with small mass.
 //
-// Force (Eq. 6 with Eq. 7's smoothed part):
-//   −Σ_p V_p σ_p (1 − α_p) Σ_j S̃_j(x_p)/V_j ∫_Ω S_j ∇S_i dV = −Σ_j σ^d_j ∫_Ω S_j ∇S_i dV,
-//   σ^d_j V_j = Σ_p (1 − α_p) S̃_j(x_p) V_p σ_p          (P2G, 6 values per node),
-// Velocity gradient:
-//   Σ_i v_i ⊗ (1 − α_p) Σ_j S̃_j/V_j ∫_Ω S_j ∇S_i = (1 − α_p) Σ_j S̃_j(x_p) L_j,
-//   L_j = (1/V_j) Σ_i v_i ⊗ ∫_Ω S_j ∇S_i dV                (grid pass, 9 values per node),
-// with S̃_j, V_j and Ω as in shape_ddmp.hpp (make_ddmp_corner_stencil gives (1 − α) S̃_j).
-// Both are the per-particle ∇̄S regrouped, so results agree with DdmpShape to round-off;
-// the cost per particle drops from two dense 64-node passes to 8-corner ones.
+// The per-particle sum over 4×4×4 nodes of Eq. 7 is split into a particle part on the
+// particle's 8 cell corners and a constant 27-node stencil pass over the grid:
+//   force:  −Σ_p V_p σ_p (1 − α_p) Σ_j S_j(x_p)/V_j ∫ S_j ∇S_i dV = −Σ_j σ^d_j ∫ S_j ∇S_i dV,
+//           σ^d_j V_j = Σ_p (1 − α_p) S_j(x_p) V_p σ_p          (P2G, 6 values per node);
+//   L:      Σ_i v_i ⊗ (1 − α_p) Σ_j S_j/V_j ∫ S_j ∇S_i = (1 − α_p) Σ_j S_j(x_p) L_j,
+//           L_j = (1/V_j) Σ_i v_i ⊗ ∫ S_j ∇S_i dV                (grid pass, 9 values per node),
+// with V_j = h³ and ∫ S_j ∇S_i dV = h² G(i − j), G the separable stencil of shape_ddmp.hpp
+// (ddmp_smoothing_mass, ddmp_smoothing_slope). Both are the per-particle ∇̄S regrouped, so
+// results agree with DdmpShape to round-off. The passes write each node from its 27
+// neighbours in a fixed order: deterministic for any thread count.
 //
-// ∫_Ω S_j ∇S_i dV = Σ_{cells e of Ω with corners j and i} h² T[j − e][i − e], T the constant
-// table of ddmp_cell_integrals(). The grid passes are written node by node (each node sums
-// over the Ω cells around it, in a fixed order, and writes only itself): deterministic for
-// any thread count. The nodal values live beside the grid's 8 lanes, in DdmpNodalValues,
-// allocated only for DDMP-on-grid runs.
+// Small-mass nodes (Zhang, Ma & Giguere 2011, the nodal transfer coefficients C_li; the
+// "distribution coefficient algorithm" of DDMP implementations): the smoothed force reaches
+// the nodes one cell outside the material, which have no mass, and a particle that has just
+// entered a cell gives its far nodes a mass that vanishes with its distance to the face
+// while its α∇S force does not vanish as fast (α ~ d^{2/7}). Such a node l (mass below a
+// fraction of ρ h³, not held by a body) gets no acceleration of its own: its mass, momentum
+// and force go to the sizeable nodes i around it with coefficients C_li, and after the grid
+// update its velocity and velocity change are read back, v_l = Σ_i C_li v_i. The same C
+// both ways with Σ_i C_li = 1 keeps mass, momentum and force exactly and makes the
+// particles' momentum change equal to the total force; Σ_i C_li x_i = x_l (a linear fit,
+// find_ddmp_small_mass_nodes) makes a linear velocity field read back exactly, so the
+// smoothed velocity gradient of a surface node sees no spurious shear. The nodal values
+// live beside the grid's 8 lanes, in DdmpNodalValues.
 #pragma once
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
+#include <Eigen/Cholesky>
+
 #include <array>
+#include <cstdlib>
 #include <cstdint>
 #include <vector>
 
 #include "mpm/bucket_buffer.hpp"
-#include "mpm/cell_occupancy.hpp"
 #include "mpm/shape_ddmp.hpp"
 #include "mpm/sparse_grid.hpp"
 
 namespace latmpm::mpm {
 
 // Per grid node, in block order like the grid (block · 64 + node):
-//   after P2G: M_j = Σ_p (1 − α_p) S̃_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy
-//   (6 values); after ddmp_nodal_stress: M_j · 8/(count_j h) = −σ^d_j h², since
-//   ∫_Ω S_j ∇S_i dV = h² Σ_e T and V_j = count_j h³/8;
+//   after P2G: M_j = Σ_p (1 − α_p) S_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy;
+//   while small-mass nodes are handed on: the lanes being moved or read back;
 //   before G2P: L_j, row-major (9 values).
+// `coefficients`: 4 per node, (c₀, c) of the distribution coefficients of a small-mass node
+// that hands on its lanes (find_ddmp_small_mass_nodes), zero for the others.
 struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
   std::vector<Real> values;
+  std::vector<Real> coefficients;
+  std::vector<uint8_t> block_has_small;  // per block: some node hands on
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
-  std::vector<uint8_t> omega;                   // per block, 64 cells (named by their lowest node): in Ω
 
   Real* node(size_t block, int n) { return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count; }
   const Real* node(size_t block, int n) const {
@@ -54,21 +64,14 @@ namespace ddmp_grid_detail {
 constexpr int bw = SparseGrid::block_width;
 inline int neighbour_index(int dx, int dy, int dz) { return (dx + 1) * 9 + (dy + 1) * 3 + (dz + 1); }
 
-// The Ω flags of the cells at local coordinates −1 … 3 around a block (index local + 1).
-struct CellHalo {
-  uint8_t in_omega[5][5][5];
-};
-inline void load_cells(const DdmpNodalValues& nv, size_t block, CellHalo& halo) {
-  for (int i = -1; i < bw; ++i)
-    for (int j = -1; j < bw; ++j)
-      for (int k = -1; k < bw; ++k) {
-        const int di = floor_div(i, bw), dj = floor_div(j, bw), dk = floor_div(k, bw);
-        const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
-        halo.in_omega[i + 1][j + 1][k + 1] =
-            nb < 0 ? 0
-                   : nv.omega[size_t(nb) * SparseGrid::nodes_per_block +
-                              size_t(((i - bw * di) * bw + (j - bw * dj)) * bw + (k - bw * dk))];
-      }
+// Position of node (i, j, k) (grid coordinates) in its block, and the block's place in a
+// bucket's table of 4×4×4 blocks.
+inline int local_index(int i, int j, int k) {
+  return ((i - bw * floor_div(i, bw)) * bw + (j - bw * floor_div(j, bw))) * bw + (k - bw * floor_div(k, bw));
+}
+inline int table_index(const Bucket& b, int i, int j, int k) {
+  return ((floor_div(i, bw) - first_table_block(b.coord[0])) * 4 + (floor_div(j, bw) - first_table_block(b.coord[1]))) * 4 +
+         (floor_div(k, bw) - first_table_block(b.coord[2]));
 }
 
 // `Components` values of the nodes at local coordinates −1 … 4 around a block (index
@@ -94,123 +97,310 @@ void load_nodes(const DdmpNodalValues& nv, size_t block, Get get, NodeHalo<Compo
       }
 }
 
-// Ω cells around node (li, lj, lk) of the block (local 0 … 3).
-inline int omega_cells_around(const CellHalo& cells, int li, int lj, int lk) {
-  int n = 0;
-  for (int l = 0; l < 8; ++l) n += cells.in_omega[li + 1 - (l >> 2)][lj + 1 - ((l >> 1) & 1)][lk + 1 - (l & 1)];
-  return n;
+// G(o) of the smoothing integral ∫ S_j ∇S_i dV = h² G(i − j) for the 27 offsets
+// o ∈ {−1, 0, 1}³ (index neighbour_index).
+struct SmoothingStencil {
+  std::array<Vec3, 27> G;
+};
+inline const SmoothingStencil& smoothing_stencil() {
+  static const SmoothingStencil s = [] {
+    SmoothingStencil t;
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y)
+        for (int z = -1; z <= 1; ++z) {
+          const Real mx = ddmp_smoothing_mass(x), my = ddmp_smoothing_mass(y), mz = ddmp_smoothing_mass(z);
+          t.G[size_t(neighbour_index(x, y, z))] =
+              Vec3(ddmp_smoothing_slope(x) * my * mz, mx * ddmp_smoothing_slope(y) * mz, mx * my * ddmp_smoothing_slope(z));
+        }
+    return t;
+  }();
+  return s;
 }
 
-// 8/(n h) for a node with n Ω cells around it (V_j = n h³/8, and the table's h²), 0 if none.
-inline Real nodal_volume_scale(int n, Real h) { return n > 0 ? Real(8) / (Real(n) * h) : Real(0); }
-
-// For node (li, lj, lk) of the block: fn(self, other, x, y, z) for each Ω cell e around it,
-// the node being corner `self` of e, and each corner `other` of e at halo index (x, y, z)
-// (NodeHalo's indexing); the pair's cell integral is T[self][other] or T[other][self].
-template <class Fn>
-[[gnu::always_inline]] inline void for_each_omega_corner_pair(const CellHalo& cells, int li, int lj, int lk, Fn&& fn) {
-  for (int self = 0; self < 8; ++self) {  // node = cell e's lowest node + corner offset
-    const int ex = li + 1 - (self >> 2), ey = lj + 1 - ((self >> 1) & 1), ez = lk + 1 - (self & 1);  // halo indices
-    if (!cells.in_omega[ex][ey][ez]) continue;
-    for (int other = 0; other < 8; ++other) fn(self, other, ex + (other >> 2), ey + ((other >> 1) & 1), ez + (other & 1));
-  }
-}
 }  // namespace ddmp_grid_detail
 
 // Sizes and zeroes the nodal values for the grid's active blocks and finds each block's
-// neighbours and cells of Ω (Σ V0 ≥ h³/2: the same test as fill_occupancy).
-inline void prepare_ddmp_nodal_values(const SparseGrid& grid, const std::vector<Real>& cell_volume, Real h,
-                                      DdmpNodalValues& nv) {
+// neighbours.
+inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const size_t blocks = grid.block_count();
   nv.values.assign(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));
+  nv.coefficients.assign(blocks * SparseGrid::nodes_per_block * 4, Real(0));
+  nv.block_has_small.assign(blocks, 0);
   nv.neighbours.resize(blocks);
-  nv.omega.resize(blocks * SparseGrid::nodes_per_block);
-  const Real half_cell = Real(0.5) * h * h * h;
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz)
           nv.neighbours[b][size_t(neighbour_index(dx, dy, dz))] = grid.find(c[0] + dx, c[1] + dy, c[2] + dz);
-    for (int n = 0; n < SparseGrid::nodes_per_block; ++n)
-      nv.omega[b * SparseGrid::nodes_per_block + size_t(n)] =
-          cell_volume[b * SparseGrid::nodes_per_block + size_t(n)] >= half_cell;
   });
 }
 
 // Zeroes every node's values (before a scatter that maps the stress again).
 inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) { std::fill(nv.values.begin(), nv.values.end(), Real(0)); }
 
-// The mapped −(1 − α) S̃ V σ of each node j into M_j · 8/(count_j h), count_j the Ω cells
-// around j (V_j = count_j h³/8): then −Σ_j σ^d_j ∫_Ω S_j ∇S_i dV = Σ_j (that) Σ_e T[..].
-inline void ddmp_nodal_stress(const SparseGrid& grid, Real h, DdmpNodalValues& nv) {
+// f_i += Σ_j (M_j / h³) h² G(i − j) = Σ_j M_j G(i − j) / h over the 27 neighbours j, with
+// M_j the mapped −(1 − α) S V σ (Voigt order): the smoothed part of Eq. 6's force, into
+// the grid's force lanes.
+inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv, Real h) {
   using namespace ddmp_grid_detail;
+  const auto& G = smoothing_stencil().G;
+  const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    CellHalo cells;
-    load_cells(nv, b, cells);
-    for (int i = 0; i < bw; ++i)
-      for (int j = 0; j < bw; ++j)
-        for (int k = 0; k < bw; ++k) {
-          Real* m = nv.node(b, (i * bw + j) * bw + k);
-          const Real scale = nodal_volume_scale(omega_cells_around(cells, i, j, k), h);
-          for (int c = 0; c < 6; ++c) m[c] *= scale;
-        }
-  });
-}
-
-// f_i += Σ_{Ω cells e around i} Σ_{corners j of e} s_j T[j − e][i − e], s_j the values of
-// ddmp_nodal_stress (a symmetric tensor in Voigt order): the smoothed part of Eq. 6's force,
-// into the grid's force lanes.
-inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv) {
-  using namespace ddmp_grid_detail;
-  const auto& table = ddmp_cell_integrals();
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    CellHalo cells;
-    load_cells(nv, b, cells);
     NodeHalo<6> s;
     load_nodes<6>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, s);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real f[3] = {0, 0, 0};
-          for_each_omega_corner_pair(cells, i, j, k, [&](int self, int other, int x, int y, int z) {
-            const Real* sj = s.v[x][y][z];  // node i = self, node j = other: T[j][i]
-            const Vec3& g = table[size_t(other)][size_t(self)];
-            f[0] += sj[0] * g[0] + sj[5] * g[1] + sj[4] * g[2];
-            f[1] += sj[5] * g[0] + sj[1] * g[1] + sj[3] * g[2];
-            f[2] += sj[4] * g[0] + sj[3] * g[1] + sj[2] * g[2];
-          });
+          for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+              for (int z = -1; z <= 1; ++z) {
+                const Real* sj = s.v[i + 1 - x][j + 1 - y][k + 1 - z];  // node j = i − o
+                const Vec3& g = G[size_t(neighbour_index(x, y, z))];
+                f[0] += sj[0] * g[0] + sj[5] * g[1] + sj[4] * g[2];
+                f[1] += sj[5] * g[0] + sj[1] * g[1] + sj[3] * g[2];
+                f[2] += sj[4] * g[0] + sj[3] * g[1] + sj[2] * g[2];
+              }
           Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
-          for (int a = 0; a < 3; ++a) node[lane::force + a] += f[a];
+          for (int a = 0; a < 3; ++a) node[lane::force + a] += inv_h * f[a];
         }
   });
 }
 
-// L_j = (1/V_j) Σ_i v_i ⊗ ∫_Ω S_j ∇S_i dV from the grid velocities in lanes
-// velocity_lane … + 2, into the nodal values (row-major).
+// L_j = (1/h³) Σ_i v_i ⊗ h² G(i − j) from the grid velocities in lanes velocity_lane … + 2,
+// into the nodal values (row-major).
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  const auto& table = ddmp_cell_integrals();
+  const auto& G = smoothing_stencil().G;
+  const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    CellHalo cells;
-    load_cells(nv, b, cells);
     NodeHalo<3> v;
     load_nodes<3>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + velocity_lane; }, v);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real L[9] = {};
-          for_each_omega_corner_pair(cells, i, j, k, [&](int self, int other, int x, int y, int z) {
-            const Real* vi = v.v[x][y][z];  // node j = self, node i = other: T[j][i]
-            const Vec3& g = table[size_t(self)][size_t(other)];
-            for (int r = 0; r < 3; ++r)
-              for (int c = 0; c < 3; ++c) L[r * 3 + c] += vi[r] * g[c];
-          });
+          for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+              for (int z = -1; z <= 1; ++z) {
+                const Real* vi = v.v[i + 1 + x][j + 1 + y][k + 1 + z];  // node i = j + o
+                const Vec3& g = G[size_t(neighbour_index(x, y, z))];
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) L[r * 3 + c] += vi[r] * g[c];
+              }
           Real* out = nv.node(b, (i * bw + j) * bw + k);
-          const Real scale = nodal_volume_scale(omega_cells_around(cells, i, j, k), h);
-          for (int c = 0; c < 9; ++c) out[c] = scale * L[c];
+          for (int c = 0; c < 9; ++c) out[c] = inv_h * L[c];
         }
+  });
+}
+
+// --- Small-mass nodes (header comment) ---------------------------------------------------
+
+namespace ddmp_grid_detail {
+constexpr int reach = 2;  // the neighbourhood of a small-mass node: offsets −2 … 2 per axis
+constexpr int wide = bw + 2 * reach;  // nodes per axis of a block with that neighbourhood
+
+// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
+inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
+  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
+}
+inline Real* coefficients_of(DdmpNodalValues& nv, size_t b, int n) {
+  return nv.coefficients.data() + (b * SparseGrid::nodes_per_block + size_t(n)) * 4;
+}
+
+// `Components` values of the nodes at local coordinates −2 … 5 around a block (index
+// local + 2), value c of node n of block b from get(b, n)[c]; zero in inactive blocks.
+template <int Components>
+struct WideHalo {
+  Real v[wide][wide][wide][Components];
+  const Real* at(int li, int lj, int lk) const { return v[li + reach][lj + reach][lk + reach]; }
+};
+template <int Components, class Get>
+void load_wide(const DdmpNodalValues& nv, size_t block, Get get, WideHalo<Components>& halo) {
+  for (int i = -reach; i < bw + reach; ++i)
+    for (int j = -reach; j < bw + reach; ++j)
+      for (int k = -reach; k < bw + reach; ++k) {
+        const int di = floor_div(i, bw), dj = floor_div(j, bw), dk = floor_div(k, bw);
+        const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
+        Real* out = halo.v[i + reach][j + reach][k + reach];
+        if (nb < 0) {
+          for (int c = 0; c < Components; ++c) out[c] = 0;
+          continue;
+        }
+        const Real* in = get(size_t(nb), ((i - bw * di) * bw + (j - bw * dj)) * bw + (k - bw * dk));
+        for (int c = 0; c < Components; ++c) out[c] = in[c];
+      }
+}
+
+// Whether block b or one of its neighbours holds a node that hands on (most blocks: none).
+inline bool near_small_mass(const DdmpNodalValues& nv, size_t b) {
+  for (int nb : nv.neighbours[b])
+    if (nb >= 0 && nv.block_has_small[size_t(nb)]) return true;
+  return false;
+}
+// The 124 offsets d ≠ 0 within two cells per axis: a node one cell outside a flat face sees
+// two layers of the material along the normal (a linear fit), and every node next to a
+// particle's cell sees sizeable nodes even where a particle has just entered a new cell.
+struct Offset {
+  int x, y, z;
+  Real weight;  // 2^(−|d|₁)
+};
+constexpr int offset_count = 124;
+inline const std::array<Offset, offset_count>& neighbour_offsets() {
+  static const auto list = [] {
+    std::array<Offset, offset_count> out{};
+    size_t n = 0;
+    for (int x = -reach; x <= reach; ++x)
+      for (int y = -reach; y <= reach; ++y)
+        for (int z = -reach; z <= reach; ++z) {
+          const int l1 = std::abs(x) + std::abs(y) + std::abs(z);
+          if (l1 > 0) out[n++] = {x, y, z, Real(1) / Real(1 << l1)};
+        }
+    return out;
+  }();
+  return list;
+}
+// Calls fn(x, y, z, w) for those offsets and their weights.
+template <class Fn>
+[[gnu::always_inline]] inline void for_each_offset(Fn&& fn) {
+  for (const Offset& o : neighbour_offsets()) fn(o.x, o.y, o.z, o.weight);
+}
+}  // namespace ddmp_grid_detail
+
+// Finds the nodes that hand on their lanes — mass below `small_mass`, not held by a body
+// (lane::constraint), a node with mass within one cell (else neither their force nor their
+// velocity enters anything), sizeable nodes (mass ≥ small_mass) among its 124 neighbours
+// (neighbour_offsets) — and their distribution coefficients C_li = w(d) (c₀ + c · d),
+// d = i − l in cells over those sizeable nodes i, w(d) = 2^(−|d|₁): the weighted
+// least-squares fit of a linear field, so that
+// Σ_i C_li = 1 and Σ_i C_li x_i = x_l — a node outside a free surface reads back the linear
+// extrapolation of the material's velocity, which keeps Eq. 8's exactness for linear fields
+// in L. Where the sizeable nodes do not span 3D (a plate one node thick), or where the node
+// has mass of its own and the fit would give a neighbour a negative share of it,
+// C_li = w(d) / Σ w: their weighted mean.
+inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, DdmpNodalValues& nv) {
+  using namespace ddmp_grid_detail;
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    const Real* block = grid.block(b);
+    std::fill_n(coefficients_of(nv, b, 0), 4 * SparseGrid::nodes_per_block, Real(0));
+    nv.block_has_small[b] = 0;
+    bool any = false;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n)
+      any |= block[n * lane::count + lane::mass] < small_mass && block[n * lane::count + lane::constraint] == 0;
+    if (!any) return;
+    WideHalo<1> mass;
+    load_wide<1>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + lane::mass; }, mass);
+    for (int i = 0; i < bw; ++i)
+      for (int j = 0; j < bw; ++j)
+        for (int k = 0; k < bw; ++k) {
+          const int n = (i * bw + j) * bw + k;
+          if (block[n * lane::count + lane::mass] >= small_mass || block[n * lane::count + lane::constraint] != 0) continue;
+          Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+          bool touches_mass = false;  // a node with mass within one cell: its L or force matters
+          for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+              for (int z = -1; z <= 1; ++z) touches_mass |= mass.at(i + x, j + y, k + z)[0] > 0;
+          if (!touches_mass) continue;
+          for_each_offset([&](int x, int y, int z, Real w) {
+            if (!(mass.at(i + x, j + y, k + z)[0] >= small_mass)) return;
+            const Eigen::Vector4d basis(1, x, y, z);
+            A.noalias() += w * basis * basis.transpose();
+          });
+          if (!(A(0, 0) > 0)) continue;
+          const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
+          const Eigen::Vector4d diagonal = ldlt.vectorD();
+          Eigen::Vector4d fit = Eigen::Vector4d::Zero();
+          if (ldlt.info() == Eigen::Success && diagonal.minCoeff() > 1e-6 * diagonal.maxCoeff())
+            fit = ldlt.solve(Eigen::Vector4d(1, 0, 0, 0));
+          // A node with mass hands it on too: a negative C_li could leave a receiver with
+          // none. Such a node takes the weighted mean (a node outside the material has none).
+          bool negative = false;
+          if (block[n * lane::count + lane::mass] > 0 && fit[0] != 0)
+            for_each_offset([&](int x, int y, int z, Real w) {
+              if (mass.at(i + x, j + y, k + z)[0] >= small_mass)
+                negative |= distribution_coefficient(fit.data(), x, y, z, w) < 0;
+            });
+          if (fit[0] == 0 || negative) fit = Eigen::Vector4d(1 / A(0, 0), 0, 0, 0);
+          Real* c = coefficients_of(nv, b, n);
+          for (int a = 0; a < 4; ++a) c[a] = fit[a];
+          nv.block_has_small[b] = 1;
+        }
+  });
+}
+
+// Hands lanes [first, first + count) of every small-mass node on to its sizeable
+// neighbours, C_li times each, and zeroes them (mass, momentum and force after P2G; the
+// remapped momentum of MUSL).
+inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int first, int count, DdmpNodalValues& nv) {
+  using namespace ddmp_grid_detail;
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // stage and clear the sources
+    if (!nv.block_has_small[b]) return;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+      if (coefficients_of(nv, b, n)[0] == 0) continue;
+      Real* node = grid.block(b) + n * lane::count;
+      Real* staged = nv.node(b, n);
+      for (int c = 0; c < count; ++c) staged[c] = node[first + c], node[first + c] = 0;
+    }
+  });
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // receivers pull their part
+    if (!near_small_mass(nv, b)) return;
+    // Per neighbour: its up to 7 staged lanes and 4 coefficients (zero: not a source).
+    WideHalo<7> source;
+    load_wide<7>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, source);
+    WideHalo<4> coefficients;
+    load_wide<4>(nv, b, [&](size_t nb, int n) { return nv.coefficients.data() + (nb * SparseGrid::nodes_per_block + size_t(n)) * 4; },
+                 coefficients);
+    for (int i = 0; i < bw; ++i)
+      for (int j = 0; j < bw; ++j)
+        for (int k = 0; k < bw; ++k) {
+          Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
+          if (!(node[lane::mass] >= small_mass)) continue;
+          for_each_offset([&](int x, int y, int z, Real w) {  // source l = i + (x, y, z): d = i − l = −(x, y, z)
+            const Real* c = coefficients.at(i + x, j + y, k + z);
+            if (c[0] == 0) return;
+            const Real C = distribution_coefficient(c, -x, -y, -z, w);
+            const Real* staged = source.at(i + x, j + y, k + z);
+            for (int q = 0; q < count; ++q) node[first + q] += C * staged[q];
+          });
+        }
+  });
+}
+
+// Lanes [first, first + count) of every small-mass node from its sizeable neighbours,
+// v_l = Σ_i C_li v_i (the new velocity and its change after the grid update; MUSL's
+// remapped velocity).
+inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int first, int count, DdmpNodalValues& nv) {
+  using namespace ddmp_grid_detail;
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    if (!nv.block_has_small[b]) return;
+    WideHalo<lane::count> lanes;
+    load_wide<lane::count>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count; }, lanes);
+    for (int i = 0; i < bw; ++i)
+      for (int j = 0; j < bw; ++j)
+        for (int k = 0; k < bw; ++k) {
+          const int n = (i * bw + j) * bw + k;
+          const Real* c = coefficients_of(nv, b, n);
+          if (c[0] == 0) continue;
+          Real* staged = nv.node(b, n);
+          for (int q = 0; q < count; ++q) staged[q] = 0;
+          for_each_offset([&](int x, int y, int z, Real w) {
+            const Real* other = lanes.at(i + x, j + y, k + z);
+            if (!(other[lane::mass] >= small_mass)) return;
+            const Real C = distribution_coefficient(c, x, y, z, w);
+            for (int q = 0; q < count; ++q) staged[q] += C * other[first + q];
+          });
+        }
+  });
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    if (!nv.block_has_small[b]) return;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+      if (coefficients_of(nv, b, n)[0] == 0) continue;
+      Real* node = grid.block(b) + n * lane::count;
+      const Real* staged = nv.node(b, n);
+      for (int q = 0; q < count; ++q) node[first + q] = staged[q];
+    }
   });
 }
 
@@ -225,8 +415,8 @@ void for_each_box_node(const Bucket& b, const BlockTable& table, BucketBuffer& b
   for (int i = b.box_lo[0]; i <= b.box_hi[0]; ++i)
     for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j)
       for (int k = b.box_lo[2]; k <= b.box_hi[2]; ++k) {
-        const int block = table[size_t(occupancy_detail::table_index(b, i, j, k))];
-        fn(buffer.ddmp.data() + buffer.ddmp_offset(i, j, k), block, occupancy_detail::local_bit(i, j, k));
+        const int block = table[size_t(ddmp_grid_detail::table_index(b, i, j, k))];
+        fn(buffer.ddmp.data() + buffer.ddmp_offset(i, j, k), block, ddmp_grid_detail::local_index(i, j, k));
       }
 }
 
@@ -245,7 +435,7 @@ inline void add_ddmp_box_to_grid(const Bucket& b, const BlockTable& table, Bucke
   });
 }
 
-// The point's part of the nodal stress: −(1 − α) S̃_j V σ onto its cell's corners j
+// The point's part of the nodal stress: −(1 − α) S_j V σ onto its cell's corners j
 // (minus_volume = −V, σ in Voigt order).
 inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_volume, const SymTensor& s,
                                        BucketBuffer& buffer) {
@@ -257,7 +447,7 @@ inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_v
   }
 }
 
-// The point's smoothed part of L̄: (1 − α) Σ_j S̃_j L_j over its cell's corners, row-major.
+// The point's smoothed part of L̄: (1 − α) Σ_j S_j L_j over its cell's corners, row-major.
 inline void ddmp_corner_velocity_gradient(const DdmpCornerStencil& st, const BucketBuffer& buffer, Real L[9]) {
   for (int k = 0; k < 9; ++k) L[k] = 0;
   for (int l = 0; l < 8; ++l) {

@@ -19,6 +19,8 @@ void validate(const Settings& s, const std::string& where) {
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1))
     throw InputError(where, "ddmp_alpha_peak", "must lie in (0, 1]");
   if (!positive(s.ddmp_alpha_exponent)) throw InputError(where, "ddmp_alpha_exponent", "must be positive");
+  if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
+    throw InputError(where, "ddmp_small_mass_fraction", "must lie in [0, 1)");
   if (!positive(s.mass_scaling)) throw InputError(where, "mass_scaling", "must be positive");
   if (!s.gravity.allFinite()) throw InputError(where, "gravity", "must be finite");
   if (!(s.record_layer_thickness >= 0)) throw InputError(where, "record_layer_thickness", "must not be negative");

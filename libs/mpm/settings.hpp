@@ -4,6 +4,7 @@
 #include <string>
 
 #include "mpm/real.hpp"
+#include "mpm/shape_ddmp.hpp"
 #include "mpm/shape_function_kind.hpp"
 
 namespace latmpm::mpm {
@@ -25,15 +26,18 @@ struct Settings {
   // almost no numerical damping, enough to stop ringing of the grid's null modes.
   Real flip_blend = 0.99;
   // DDMP's partition function α = peak · Π_axes [4 f (1 − f)]^exponent, f the point's
-  // position in its cell (shape_ddmp.hpp; docs/solver.md, "DDMP", "Decision — α"):
-  // α ∇S is what resists the odd–even modes the smoothed gradient cannot see. Paper A's
-  // Eq. 5 in 3D is peak 0.227, exponent 2/7.
-  Real ddmp_alpha_peak = 1;          // in (0, 1]
-  Real ddmp_alpha_exponent = 0.125;  // > 0
+  // position in its cell (shape_ddmp.hpp): the default is Paper A's Eq. 5 in 3D; the two
+  // numbers stay settings for studies.
+  Real ddmp_alpha_peak = DdmpPartition{}.peak;          // in (0, 1]
+  Real ddmp_alpha_exponent = DdmpPartition{}.exponent;  // > 0
   // DDMP's smoothed gradient on the grid (Paper A Eq. 4; ddmp_grid.hpp): nodal σ^d and L
-  // over the cells of Ω instead of a dense 4×4×4 gradient per particle. Same results to
-  // round-off; false keeps the per-particle evaluation (the reference in tests/mpm).
+  // instead of a dense 4×4×4 gradient per particle. Same results to round-off; false keeps
+  // the per-particle evaluation (the reference in tests/mpm).
   bool ddmp_on_grid = true;
+  // DDMP: a node with less mass than this fraction of ρ h³ (ρ the smallest density of a
+  // deformable body) hands its mass, momentum and force on to its neighbours and reads its
+  // velocity back from them (ddmp_grid.hpp, distribution coefficients).
+  Real ddmp_small_mass_fraction = 0.01;  // in [0, 1)
 
   // Time step: automatic, dt = cfl · h / max_p(c_p + |v_p|), c_p the dilatational wave
   // speed of the particle's material (at its current J), re-evaluated every step.

@@ -308,7 +308,7 @@ size_t Simulation::grid_memory_bytes() const {
   // DDMP on the grid: its nodal σ^d / L and per-block tables beside the lanes (ddmp_grid.hpp).
   const DdmpNodalValues& d = impl_->ddmp_nodal;
   return impl_->grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
-         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.omega.capacity();
+         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.coefficients.capacity() * sizeof(Real) + d.block_has_small.capacity();
 }
 
 size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(particles_); }

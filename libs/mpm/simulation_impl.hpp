@@ -56,8 +56,8 @@ struct Simulation::Impl {
   Real initial_energy = 0;       // J
   std::vector<Vec3> initial_centre;  // per body, m
   Reactions reactions;
-  std::vector<Real> occupancy;  // DDMP: deformable volume per cell (cell_occupancy.hpp)
-  DdmpNodalValues ddmp_nodal;   // DDMP on the grid: σ^d and L per node (ddmp_grid.hpp)
+  DdmpNodalValues ddmp_nodal;   // DDMP: σ^d, L and small-mass shares per node (ddmp_grid.hpp)
+  Real ddmp_small_mass = -1;    // DDMP: below this a node's lanes go to its neighbours, kg (set on first use)
   // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
   bool penalty_contact = false;
   std::vector<ContactMaterial> contact_materials;  // per point body
@@ -81,9 +81,9 @@ struct Simulation::Impl {
       return f(shape);
     });
   }
-  // Ω's cells one further below the bucket's box than the stencil reaches (cell_occupancy.hpp).
+  // DDMP on the grid: its smoothed force reaches one node beyond the particles' cells.
   template <class Shape>
-  static constexpr int occupancy_widening = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
+  static constexpr int grid_halo = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
 
   // --- Buckets and the active grid -------------------------------------------------------
 
@@ -120,9 +120,10 @@ struct Simulation::Impl {
         b.box_lo[a] += Shape::reach_below;
         b.box_hi[a] += Shape::reach_above;
       }
-      for (int i = floor_div(b.box_lo[0], bw); i <= floor_div(b.box_hi[0], bw); ++i)
-        for (int j = floor_div(b.box_lo[1], bw); j <= floor_div(b.box_hi[1], bw); ++j)
-          for (int k = floor_div(b.box_lo[2], bw); k <= floor_div(b.box_hi[2], bw); ++k)
+      constexpr int e = grid_halo<Shape>;
+      for (int i = floor_div(b.box_lo[0] - e, bw); i <= floor_div(b.box_hi[0] + e, bw); ++i)
+        for (int j = floor_div(b.box_lo[1] - e, bw); j <= floor_div(b.box_hi[1] + e, bw); ++j)
+          for (int k = floor_div(b.box_lo[2] - e, bw); k <= floor_div(b.box_hi[2] + e, bw); ++k)
             keys.push_back(SparseGrid::block_key(i, j, k));
     }
     std::sort(keys.begin(), keys.end());
@@ -138,14 +139,7 @@ struct Simulation::Impl {
           for (int k = 0; k < 4; ++k)
             tables[bi][(i * 4 + j) * 4 + k] = grid.find(first[0] + i, first[1] + j, first[2] + k);
     }
-    if constexpr (has_smoothed_gradient<Shape>::value) {
-      std::vector<bool> deformable;
-      for (const auto& b : body_info) deformable.push_back(b.role == BodyRole::deformable);
-      mark_occupied_cells(buckets, tables, particles(), deformable, settings().cell_size, occupancy,
-                          grid.block_count());
-      if constexpr (has_grid_smoothed_gradient<Shape>::value)
-        prepare_ddmp_nodal_values(grid, occupancy, settings().cell_size, ddmp_nodal);
-    }
+    if constexpr (has_smoothed_gradient<Shape>::value) prepare_ddmp_nodal_values(grid, ddmp_nodal);
     clear_grid(grid);
     grid_holds_velocity = false;
     tallies.assign(list.size(), BucketTally{});
@@ -180,7 +174,7 @@ struct Simulation::Impl {
         for (size_t c = r.begin(); c < r.end(); ++c) {
           const Bucket& b = list[colour[c]];
           buffer.attach(b);
-          if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[colour[c]], occupancy, settings().cell_size, ddmp_partition(), buffer, occupancy_widening<Shape>);
+          buffer.ddmp_alpha = ddmp_partition();
           clear_box(b, buffer);
           if constexpr (nodal_stress) clear_ddmp_box(b, tables[colour[c]], buffer);
           scatter_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(),
@@ -192,8 +186,7 @@ struct Simulation::Impl {
     }
     domain.exchange_halo(grid);
     if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
-      ddmp_nodal_stress(grid, settings().cell_size, ddmp_nodal);
-      add_ddmp_smoothed_force(grid, ddmp_nodal);
+      add_ddmp_smoothed_force(grid, ddmp_nodal, settings().cell_size);
     }
   }
 
@@ -209,7 +202,7 @@ struct Simulation::Impl {
       for (size_t bi = r.begin(); bi < r.end(); ++bi) {
         const Bucket& b = list[bi];
         buffer.attach(b);
-        if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, tables[bi], occupancy, settings().cell_size, ddmp_partition(), buffer, occupancy_widening<Shape>);
+        buffer.ddmp_alpha = ddmp_partition();
         copy_box_from_grid(b, tables[bi], grid, buffer);
         if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, tables[bi], ddmp_nodal, buffer);
         gather_bucket<Shape, Mode>(b, &buckets.runs()[b.run_begin], particles(), body_info.data(), parameters,
@@ -219,6 +212,37 @@ struct Simulation::Impl {
     absorb_tallies(Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
   }
 
+  // --- DDMP's small-mass nodes (ddmp_grid.hpp) --------------------------------------------
+
+  // ε ρ h³, ρ the smallest density of a deformable body's points (Settings::ddmp_small_mass_fraction).
+  Real small_mass() {
+    if (ddmp_small_mass < 0) {
+      const Particles& ps = particles();
+      Real density = std::numeric_limits<Real>::infinity();
+      for (size_t p = 0; p < ps.size(); ++p)
+        if (body_info[size_t(ps.body[p])].role == BodyRole::deformable && ps.volume0[p] > 0)
+          density = std::min(density, ps.mass[p] / ps.volume0[p]);
+      const Real h = settings().cell_size;
+      ddmp_small_mass = std::isfinite(density) ? settings().ddmp_small_mass_fraction * density * h * h * h : 0;
+    }
+    return ddmp_small_mass;
+  }
+  // After a scatter: small-mass nodes hand lanes [first, first + count) on to their
+  // neighbours (`find`: decide which nodes those are, from the mass just mapped).
+  template <class Shape>
+  void ddmp_hand_on(int first, int count, bool find) {
+    if constexpr (has_smoothed_gradient<Shape>::value) {
+      if (find) find_ddmp_small_mass_nodes(grid, small_mass(), ddmp_nodal);
+      move_ddmp_small_mass_lanes(grid, small_mass(), first, count, ddmp_nodal);
+    }
+  }
+  // After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
+  template <class Shape>
+  void ddmp_read_back(int first, int count) {
+    if constexpr (has_smoothed_gradient<Shape>::value)
+      spread_ddmp_small_mass_lanes(grid, small_mass(), first, count, ddmp_nodal);
+  }
+
   // --- Schemes (Nairn 2003; Bardenhagen 2002) -------------------------------------------
 
   template <class Shape>
@@ -226,8 +250,10 @@ struct Simulation::Impl {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
     add_contact_forces<Shape>();
+    ddmp_hand_on<Shape>(lane::mass, 7, true);
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     constrain_boundaries(dt);
+    ddmp_read_back<Shape>(lane::momentum, 6);
     gather<Shape, GatherAll>(dt);
   }
 
@@ -236,13 +262,17 @@ struct Simulation::Impl {
     prepare_grid<Shape>();
     scatter<Shape, ScatterAll>();
     add_contact_forces<Shape>();
+    ddmp_hand_on<Shape>(lane::mass, 7, true);
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     constrain_boundaries(dt);
+    ddmp_read_back<Shape>(lane::momentum, 6);
     gather<Shape, GatherVelocity>(dt);
     // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterRemap>();
+    ddmp_hand_on<Shape>(lane::force, 3, false);
     grid_velocity_from_momentum(grid, lane::force, lane::force, body_info);
+    ddmp_read_back<Shape>(lane::force, 3);
     impose_boundaries(lane::force);
     gather<Shape, GatherStrainAndPosition>(dt);
   }
@@ -251,15 +281,19 @@ struct Simulation::Impl {
   void step_usf(Real dt) {
     prepare_grid<Shape>();
     scatter<Shape, ScatterMomentum>();
+    ddmp_hand_on<Shape>(lane::mass, 4, true);
     // Stress first, from the velocity at the start of the step (lanes 4–6).
     grid_velocity_from_momentum(grid, lane::momentum, lane::force, body_info);
+    ddmp_read_back<Shape>(lane::force, 3);
     impose_boundaries(lane::force);
     gather<Shape, GatherStrain>(dt);
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterForce>();
     add_contact_forces<Shape>();
+    ddmp_hand_on<Shape>(lane::force, 3, false);
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
     constrain_boundaries(dt);
+    ddmp_read_back<Shape>(lane::momentum, 6);
     gather<Shape, GatherMotion>(dt);
   }
 

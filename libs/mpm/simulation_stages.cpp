@@ -20,9 +20,14 @@ void Simulation::stage_particles_to_grid() {
 void Simulation::stage_grid_update(Real dt) {
   auto& im = *impl_;
   im.arena.execute([&] {
-    im.with_solver_shape([&](auto shape) { im.add_contact_forces<decltype(shape)>(); });
-    im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
-    im.constrain_boundaries(dt);
+    im.with_solver_shape([&](auto shape) {
+      using Shape = decltype(shape);
+      im.add_contact_forces<Shape>();
+      im.ddmp_hand_on<Shape>(lane::mass, 7, true);
+      im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
+      im.constrain_boundaries(dt);
+      im.ddmp_read_back<Shape>(lane::momentum, 6);
+    });
   });
   im.grid_holds_velocity = true;
 }
@@ -79,7 +84,7 @@ Simulation::Gathered Simulation::gather_from_grid() const {
     for (size_t bi = 0; bi < im.buckets.buckets().size(); ++bi) {
       const Bucket& b = im.buckets.buckets()[bi];
       buffer.attach(b);
-      if constexpr (has_smoothed_gradient<Shape>::value) fill_occupancy(b, im.tables[bi], im.occupancy, settings_.cell_size, im.ddmp_partition(), buffer, im.occupancy_widening<Shape>);
+      buffer.ddmp_alpha = im.ddmp_partition();
       copy_box_from_grid(b, im.tables[bi], im.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, im.tables[bi], im.ddmp_nodal, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {

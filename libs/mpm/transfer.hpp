@@ -14,7 +14,6 @@
 
 #include "mpm/body.hpp"
 #include "mpm/bucket_buffer.hpp"
-#include "mpm/cell_occupancy.hpp"
 #include "mpm/ddmp_grid.hpp"
 #include "mpm/material_history.hpp"
 #include "mpm/material_model.hpp"
@@ -91,17 +90,15 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
   }
 }
 
-// The stencil of particle p: the shape's tensor-product stencil, or DDMP's with the
-// occupancy of the cells around the particle (from the bucket buffer, cell_occupancy.hpp).
+// The stencil of particle p: the shape's tensor-product stencil, or DDMP's with the run's
+// partition function α (from the bucket buffer).
 // Gradient = false: the pass needs weights only (DDMP then skips its smoothed part).
 template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
   if constexpr (has_grid_smoothed_gradient<Shape>::value)
-    return make_ddmp_corner_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h),
-                                    buffer.ddmp_alpha);
+    return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha);
   else if constexpr (has_smoothed_gradient<Shape>::value)
-    return make_ddmp_stencil(ps.position[p], 1 / h, occupancy_around(buffer, ps.position[p], 1 / h), buffer.ddmp_alpha,
-                             Gradient);
+    return make_ddmp_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, Gradient);
   else if constexpr (trims_zero_planes<Shape>::value)
     return trim_zero_planes(make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h));
   else

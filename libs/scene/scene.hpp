@@ -5,6 +5,7 @@
 // without one.
 #pragma once
 #include <Eigen/Core>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -12,6 +13,10 @@
 namespace latmpm {
 
 enum class BodyRole { deformable, fixed, driven };
+// Paper A's Eq. 5 in 3D as DDMP's α = peak · Π_axes [4 f (1 − f)]^exponent (mpm/shape_ddmp.hpp).
+inline const double default_ddmp_alpha_peak = 0.5 * std::pow(2.0, -16.0 / 14);
+inline const double default_ddmp_alpha_exponent = 2.0 / 7;
+
 enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp };
 enum class SchemeKind { usl, usf, musl };
 enum class MaterialModel { linear_elastic, neo_hookean, j2 };
@@ -98,8 +103,10 @@ struct Scene {
   ShapeKind shape = ShapeKind::ugimp;
   SchemeKind scheme = SchemeKind::usl;
   double flip = 0.99;  // FLIP fraction of the velocity update (1 = pure FLIP, 0 = PIC)
-  double ddmp_alpha_peak = 1;          // DDMP partition function α: value at the cell centre
-  double ddmp_alpha_exponent = 0.125;  // and per-axis exponent (mpm::Settings)
+  // DDMP partition function α: value at the cell centre and per-axis exponent
+  // (mpm::Settings); the defaults are paper A's Eq. 5 in 3D.
+  double ddmp_alpha_peak = default_ddmp_alpha_peak;
+  double ddmp_alpha_exponent = default_ddmp_alpha_exponent;
   bool ddmp_on_grid = true;            // DDMP's smoothed gradient on the grid (mpm::Settings)
 
   double cfl = 0.3;      // used when dt == 0

@@ -58,17 +58,17 @@ void read_grid(TableReader grid, Scene& s) {
   s.cell_size = grid.quantity("cell", dimension::length);
   if (!(s.cell_size > 0)) grid.fail("cell", "must be positive");
   s.shape = enum_from(grid.choice("shape", names_of(all_shapes), "ugimp"), all_shapes);
-  // Linear shapes and DDMP keep an O(1/h) gradient at a node that a particle entering an
-  // empty cell has just given a tiny mass: USL then inverts that particle (measured: the
-  // tiny column with linear shapes at step 1905, a free block struck by a flyer with DDMP).
-  // MUSL's remapped nodal velocity stays bounded, so it is their default (docs/scene.md).
-  const bool remap = s.shape == ShapeKind::linear || s.shape == ShapeKind::ddmp;
+  // Linear shapes keep an O(1/h) gradient at a node that a particle entering an empty cell
+  // has just given a tiny mass: USL then inverts that particle (measured: the tiny column at
+  // step 1905). MUSL's remapped nodal velocity stays bounded, so it is their default
+  // (docs/scene.md). DDMP hands such nodes on to their neighbours and runs USL, as the paper.
+  const bool remap = s.shape == ShapeKind::linear;
   s.scheme = enum_from(grid.choice("scheme", names_of(all_schemes), remap ? "musl" : "usl"), all_schemes);
   s.flip = grid.number("flip", 0.99);
   if (s.flip < 0 || s.flip > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
-  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", 1);
+  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", default_ddmp_alpha_peak);
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
-  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", 0.125);
+  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", default_ddmp_alpha_exponent);
   if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
   s.ddmp_on_grid = grid.boolean("ddmp_on_grid", true);
   grid.finish();

@@ -54,14 +54,9 @@ inline void tag_points(PointSet& ps, const std::string& tag,
   for (size_t p = 0; p < ps.size(); ++p) mask[p] = select(p) ? 1 : 0;
 }
 
-// The update scheme a test runs a shape function with: USL, except MUSL for DDMP, whose
-// modified gradient (like linear MPM's) stays O(1/h) at a node that a particle entering an
-// empty cell has just given a tiny mass — USL's velocity gradient from that node's huge
-// velocity inverts the particle; MUSL's remapped nodal velocity is a mass-weighted mean
-// of particle velocities and stays bounded (docs/solver.md, "DDMP").
-inline UpdateScheme scheme_for(ShapeFunctionKind shape) {
-  return shape == ShapeFunctionKind::ddmp ? UpdateScheme::musl : UpdateScheme::usl;
-}
+// The update scheme a test runs a shape function with: USL, the papers' scheme, for every
+// shape (DDMP hands its small-mass nodes on to their neighbours, ddmp_grid.hpp).
+inline UpdateScheme scheme_for(ShapeFunctionKind) { return UpdateScheme::usl; }
 
 inline MaterialParameters elastic(double young, double poisson, double density,
                                   MaterialKind kind = MaterialKind::linear_elastic) {

@@ -22,9 +22,10 @@ Settings settings_for(ShapeFunctionKind shape, Real h) {
   s.shape_function = shape;
   s.scheme = scheme_for(shape);
   // DDMP's smoothed gradient is 80 % a two-cell-wide difference (α ≤ 0.23 in 3D, Eq. 5):
-  // the most dispersive front of all. At cfl 0.5 its half-amplitude arrives 2.08 % late
-  // (USL 2.02 %), at the scenes' default cfl 0.3 1.98 %, at 0.2 1.91 % (measured); the long
-  // waves of the vibration test are within 0.2 %. It runs at the scene default here.
+  // the most dispersive front of all. With the method's whole-grid smoothing integral the
+  // half-amplitude of the step arrives 4.0 % late on this bar one cell across (measured,
+  // cfl 0.3; it was 2.0 % when Ω was the filled cells); the long waves of the vibration
+  // test are within 0.2 %. It runs at the scene default cfl here.
   if (shape == ShapeFunctionKind::ddmp) s.cfl = 0.3;
   s.threads = 2;
   return s;
@@ -62,7 +63,9 @@ TEST_CASE("A step wave in an elastic bar arrives at the speed set by modulus and
   sim.run_until(1.3 * expected);
   INFO("shape " << to_string(shape) << ": arrival " << arrival << " s, expected " << expected << " s");
   REQUIRE(arrival > 0);
-  CHECK(std::abs(arrival - expected) < 0.02 * expected);
+  // DDMP: its measured 4.0 % (above) with a margin; the other shapes 2 %.
+  const Real tolerance = shape == ShapeFunctionKind::ddmp ? 0.05 : 0.02;
+  CHECK(std::abs(arrival - expected) < tolerance * expected);
 }
 
 namespace {

@@ -82,10 +82,10 @@ TEST_CASE("A scene's quantities arrive in SI units", "[scene]") {
 TEST_CASE("Defaults are documented in the resolved scene, which reads back to the same scene", "[scene]") {
   Scene s = parse(base_scene);
   // The base scene's linear shapes default to MUSL (USL inverts particles entering empty
-  // cells with them, docs/scene.md); GIMP to USL.
+  // cells with them, docs/scene.md); GIMP and DDMP (small-mass nodes handed on) to USL.
   CHECK(s.scheme == SchemeKind::musl);
   CHECK(parse(base_scene, {"grid.shape=ugimp"}).scheme == SchemeKind::usl);
-  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == SchemeKind::musl);
+  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == SchemeKind::usl);
   CHECK(s.flip == 0.99);
   CHECK(s.gravity.isZero());
   CHECK(s.snapshot_every == 0);
