@@ -1,0 +1,107 @@
+#include "statics/displacement_control.hpp"
+
+#include "core/errors.hpp"
+
+namespace latmpm::statics {
+
+namespace {
+Dirichlet platen_conditions(const StaticProblem& problem, const PlatenLoading& loading, Real travel) {
+  Dirichlet d(problem.dof_count());
+  for (size_t n : loading.support_nodes) d.prescribe(n, Vec3::Zero());
+  for (size_t n : loading.platen_nodes) d.prescribe(n, travel * loading.direction);
+  return d;
+}
+
+Real platen_load(const PlatenLoading& loading, const Vector& f_int) {
+  Real load = 0;
+  for (size_t n : loading.platen_nodes) load += f_int.segment<3>(Eigen::Index(3 * n)).dot(loading.direction);
+  return load;
+}
+
+// A direct solver for the stability check: CG cannot tell an indefinite matrix.
+LinearSolverKind direct_kind(LinearSolverKind kind) {
+  return kind == LinearSolverKind::cg ? LinearSolverKind::cholmod : kind;
+}
+}  // namespace
+
+PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, SparseSolver& solver,
+                          const NewtonOptions& newton, const IncrementObserver& observe) {
+  if (loading.increments < 1) throw InputError("static solver", "increments", "must be at least 1");
+  PathReport report;
+  SparseSolver check(direct_kind(solver.kind()));
+  Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
+
+  // Solves at `travel` from u; true when it converged (u, point updated), false otherwise.
+  auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure) {
+    const Dirichlet conditions = platen_conditions(problem, loading, travel);
+    Vector trial = state;
+    const NewtonReport r = solve_equilibrium(problem, conditions, trial, solver, newton);
+    if (!r.converged) {
+      failure = r.failure;
+      return false;
+    }
+    state = trial;
+    point.travel = travel;
+    point.load = platen_load(loading, problem.internal_force(state));
+    point.energy = r.energy.back() + problem.external_force().dot(state);
+    point.newton_iterations = r.iterations;
+    point.linear_iterations = r.linear_iterations;
+    point.residual = r.residual.back();
+    point.min_jacobian = r.min_jacobian;
+    point.stable = true;
+    if (loading.check_stability) {
+      problem.assemble_hessian(state, false);
+      SparseMatrix& K = problem.hessian();
+      constrain_rows_and_columns(K, conditions.fixed, mean_diagonal(K));
+      point.stable = check.factorize(K);
+    }
+    return true;
+  };
+
+  const Real step = loading.travel / loading.increments;
+  Real stable_travel = 0;
+  for (int i = 1; i <= loading.increments; ++i) {
+    PathPoint point;
+    std::string failure;
+    Vector next = u;
+    const bool converged = solve_at(i * step, next, point, failure);
+    if (converged && point.stable) {
+      u = next;
+      stable_travel = point.travel;
+      report.points.push_back(point);
+      if (observe) observe(point, u);
+      continue;
+    }
+    // Bracket the end of the static path between the last stable travel and this one.
+    Real low = stable_travel, high = i * step;
+    report.end_reason = converged ? "tangent not positive definite" : failure;
+    for (int b = 0; b < loading.bisections; ++b) {
+      const Real mid = Real(0.5) * (low + high);
+      PathPoint trial_point;
+      std::string trial_failure;
+      Vector trial = u;
+      if (solve_at(mid, trial, trial_point, trial_failure) && trial_point.stable) {
+        u = trial;
+        low = mid;
+        report.points.push_back(trial_point);
+        if (observe) observe(trial_point, u);
+      } else {
+        high = mid;
+      }
+    }
+    if (converged) {  // the first unstable equilibrium closes the path
+      report.points.push_back(point);
+      if (observe) observe(point, next);
+    }
+    report.ended = true;
+    report.end_travel = high;
+    stable_travel = low;
+    break;
+  }
+  report.last_stable_travel = stable_travel;
+  for (const PathPoint& p : report.points)
+    if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  return report;
+}
+
+}  // namespace latmpm::statics
