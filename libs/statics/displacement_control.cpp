@@ -74,19 +74,24 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     }
     // Bracket the end of the static path between the last stable travel and this one.
     Real low = stable_travel, high = i * step;
+    bool high_converged = converged;
+    Real high_load = point.load;
     report.end_reason = converged ? "tangent not positive definite" : failure;
     for (int b = 0; b < loading.bisections; ++b) {
       const Real mid = Real(0.5) * (low + high);
       PathPoint trial_point;
       std::string trial_failure;
       Vector trial = u;
-      if (solve_at(mid, trial, trial_point, trial_failure) && trial_point.stable) {
+      const bool trial_converged = solve_at(mid, trial, trial_point, trial_failure);
+      if (trial_converged && trial_point.stable) {
         u = trial;
         low = mid;
         report.points.push_back(trial_point);
         if (observe) observe(trial_point, u);
       } else {
         high = mid;
+        high_converged = trial_converged;
+        high_load = trial_point.load;
       }
     }
     if (converged) {  // the first unstable equilibrium closes the path
@@ -96,11 +101,18 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     report.ended = true;
     report.end_travel = high;
     stable_travel = low;
-    break;
+    for (const PathPoint& p : report.points)
+      if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+    report.last_stable_travel = stable_travel;
+    // Midpoint of the final bracket, the load interpolated where both ends converged.
+    report.end_travel = Real(0.5) * (low + high);
+    report.end_load = high_converged ? Real(0.5) * (report.last_stable_load + high_load) : report.last_stable_load;
+    return report;
   }
   report.last_stable_travel = stable_travel;
   for (const PathPoint& p : report.points)
     if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  report.end_load = report.last_stable_load;
   return report;
 }
 

@@ -40,7 +40,8 @@ struct PathReport {
   std::vector<PathPoint> points;  // the converged increments, in order (bisection included)
   bool ended = false;             // an instability or a failure ended the path before `travel`
   std::string end_reason;         // "tangent not positive definite", or Newton's failure
-  Real end_travel = 0;            // m: first travel found unstable (or failing)
+  Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable)
+  Real end_load = 0;              // N: the load there (interpolated), or the last stable load
   Real last_stable_travel = 0;    // m: the last travel found stable
   Real last_stable_load = 0;      // N: the load there
 };
