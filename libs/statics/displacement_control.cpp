@@ -12,9 +12,10 @@ Dirichlet platen_conditions(const StaticProblem& problem, const PlatenLoading& l
   return d;
 }
 
-Real platen_load(const PlatenLoading& loading, const Vector& f_int) {
+// Σ over the nodes of the internal force along the platen's motion (N).
+Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const Vector& f_int) {
   Real load = 0;
-  for (size_t n : loading.platen_nodes) load += f_int.segment<3>(Eigen::Index(3 * n)).dot(loading.direction);
+  for (size_t n : nodes) load += f_int.segment<3>(Eigen::Index(3 * n)).dot(direction);
   return load;
 }
 
@@ -42,7 +43,9 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     }
     state = trial;
     point.travel = travel;
-    point.load = platen_load(loading, problem.internal_force(state));
+    const Vector f_int = problem.internal_force(state);
+    point.load = nodal_load(loading.platen_nodes, loading.direction, f_int);
+    point.support_load = -nodal_load(loading.support_nodes, loading.direction, f_int);
     point.energy = r.energy.back() + problem.external_force().dot(state);
     point.newton_iterations = r.iterations;
     point.linear_iterations = r.linear_iterations;

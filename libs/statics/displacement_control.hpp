@@ -28,6 +28,7 @@ struct PlatenLoading {
 struct PathPoint {
   Real travel = 0;          // m
   Real load = 0;            // N: force the platen exerts along its motion
+  Real support_load = 0;    // N: force the supports exert against it
   Real energy = 0;          // J: stored elastic energy
   int newton_iterations = 0;
   int linear_iterations = 0;

@@ -37,6 +37,8 @@ class StaticProblem {
   bool is_quadratic() const;
 
   Mat3 deformation_gradient(size_t p, const Vector& u) const;
+  // Point p's first Piola–Kirchhoff stress at F (Pa).
+  Mat3 first_piola(size_t p, const Mat3& F) const { return energies_[material_[p]].first_piola(F); }
   std::vector<Mat3> deformation_gradients(const Vector& u) const;
   // Smallest det F_p, and whether every point's det F_p > 0.
   Real min_jacobian(const Vector& u) const;

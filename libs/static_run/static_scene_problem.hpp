@@ -1,0 +1,25 @@
+// A scene as a static problem (libs/statics): the deformable bodies' points are the
+// material, the fixed bodies' points and held points are supports, the driven body's
+// points the platen; the platen moves along the driven velocity to run.end.plate_displacement.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "points/point_set.hpp"
+#include "scene/scene.hpp"
+#include "statics/displacement_control.hpp"
+
+namespace latmpm {
+
+struct StaticSceneProblem {
+  std::unique_ptr<statics::StaticProblem> problem;
+  statics::PlatenLoading loading;
+  std::vector<size_t> material_points;  // PointSet index of each problem point
+  std::vector<Eigen::Vector3d> half_size;  // of every PointSet point, m
+};
+
+// Throws InputError (scene location) for what the static solver cannot run: rigid bodies
+// by geometry, DDMP, no or several driven bodies, no support.
+StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points);
+
+}  // namespace latmpm
