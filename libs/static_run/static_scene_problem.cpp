@@ -1,5 +1,7 @@
 #include "static_run/static_scene_problem.hpp"
 
+#include <algorithm>
+
 #include "core/errors.hpp"
 #include "mpm/material.hpp"
 #include "mpm/shape_function_kind.hpp"
@@ -18,9 +20,10 @@ mpm::MaterialParameters material_of(const MaterialSpec& m) {
 }  // namespace
 
 StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points) {
-  if (!scene.rigid_bodies.empty())
-    throw InputError(scene.rigid_bodies.front().where, "rigid_bodies." + scene.rigid_bodies.front().name,
-                     "the static solver takes supports and platens as point bodies (role = \"fixed\" / \"driven\")");
+  for (const RigidBodySpec& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::free)
+      throw InputError(r.where, "rigid_bodies." + r.name + ".motion",
+                       "the static solver has no free bodies (no inertia): use driven or fixed");
   StaticSceneProblem out;
   out.half_size.resize(points.size());
   for (size_t p = 0; p < points.size(); ++p) {
@@ -35,6 +38,9 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   std::vector<statics::ElasticEnergy> energies;
   std::vector<int> energy_of_body(scene.bodies.size(), -1);
   const BodySpec* driven = nullptr;
+  const RigidBodySpec* driven_rigid = nullptr;
+  for (const RigidBodySpec& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) driven_rigid = &r;
   for (size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodySpec& body = scene.bodies[b];
     if (body.role == BodyRole::deformable) {
@@ -45,7 +51,8 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
       driven = &body;
     }
   }
-  if (!driven) throw InputError(scene.solver.where, "solver.kind", "a static solve needs one driven body (the platen)");
+  if (bool(driven) + bool(driven_rigid) != 1)
+    throw InputError(scene.solver.where, "solver.kind", "a static solve needs exactly one driven body (the platen)");
   for (size_t p = 0; p < points.size(); ++p) {
     const int e = energy_of_body[size_t(points.body[p])];
     if (e < 0) continue;
@@ -74,11 +81,26 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   const statics::NarrowBand& band = out.problem->band();
   out.loading.support_nodes = statics::nodes_reached_by(band, support_x, support_half);
   out.loading.platen_nodes = statics::nodes_reached_by(band, platen_x, platen_half);
+  // Rigid bodies by geometry: the band nodes inside them (bonded: the static counterpart of
+  // the explicit solver's no-slip grid coupling).
+  for (const RigidBodySpec& r : scene.rigid_bodies) {
+    auto& nodes = r.motion == RigidBodySpec::driven ? out.loading.platen_nodes : out.loading.support_nodes;
+    for (size_t n = 0; n < band.node_count(); ++n) {
+      const Eigen::Vector3d x = band.node_position(n);
+      const bool inside = r.shape == RigidBodySpec::half_space
+                              ? (x - r.point).dot(r.normal.normalized()) <= 1e-9 * scene.cell_size
+                              : ((x - r.min).array() >= 0).all() && ((r.max - x).array() >= 0).all();
+      if (inside) nodes.push_back(n);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  }
+  const std::string driven_where = driven ? driven->where : driven_rigid->where;
   if (out.loading.platen_nodes.empty())
-    throw InputError(driven->where, "bodies." + driven->name, "the driven body touches no node of the material");
+    throw InputError(driven_where, "driven body", "the driven body touches no node of the material");
   if (out.loading.support_nodes.empty())
     throw InputError(scene.solver.where, "solver.kind", "a static solve needs a support: a fixed body or held points");
-  out.loading.direction = driven->velocity.normalized();
+  out.loading.direction = (driven ? driven->velocity : driven_rigid->velocity).normalized();
   out.loading.travel = scene.end.value;
   out.loading.increments = scene.solver.increments;
   out.loading.check_stability = scene.solver.check_stability;

@@ -1,6 +1,7 @@
 // A scene as a static problem (libs/statics): the deformable bodies' points are the
-// material, the fixed bodies' points and held points are supports, the driven body's
-// points the platen; the platen moves along the driven velocity to run.end.plate_displacement.
+// material; the fixed bodies' points, held points and fixed rigid bodies are supports; the
+// driven body (points, or a rigid box / half-space: the band nodes inside it) is the platen,
+// moved along its velocity to run.end.plate_displacement.
 #pragma once
 #include <memory>
 #include <vector>
@@ -18,8 +19,8 @@ struct StaticSceneProblem {
   std::vector<Eigen::Vector3d> half_size;  // of every PointSet point, m
 };
 
-// Throws InputError (scene location) for what the static solver cannot run: rigid bodies
-// by geometry, DDMP, no or several driven bodies, no support.
+// Throws InputError (scene location) for what the static solver cannot run: free rigid
+// bodies, DDMP, no or several driven bodies, no support.
 StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points);
 
 }  // namespace latmpm

@@ -108,10 +108,11 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   log.line("loading: travel " + format("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
            " increments");
 
-  const BodySpec* driven = nullptr;
+  double speed = 0;  // of the one driven body (checked by make_static_problem)
   for (const auto& b : scene.bodies)
-    if (b.role == BodyRole::driven) driven = &b;
-  const double speed = driven->velocity.norm();
+    if (b.role == BodyRole::driven) speed = b.velocity.norm();
+  for (const auto& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) speed = r.velocity.norm();
   SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", static_columns, provenance);
   SnapshotWriter snapshots(run_dir, provenance);
   statics::Vector zero = statics::Vector::Zero(Eigen::Index(problem.dof_count()));

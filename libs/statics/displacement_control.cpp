@@ -68,6 +68,10 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     std::string failure;
     Vector next = u;
     const bool converged = solve_at(i * step, next, point, failure);
+    // A load below the previous one: past a limit point (the peak of the static path).
+    const bool past_peak = converged && loading.end_at_load_maximum && !report.points.empty() &&
+                           point.load < report.points.back().load;
+    if (past_peak) point.stable = false;
     if (converged && point.stable) {
       u = next;
       stable_travel = point.travel;
@@ -79,13 +83,16 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     Real low = stable_travel, high = i * step;
     bool high_converged = converged;
     Real high_load = point.load;
-    report.end_reason = converged ? "tangent not positive definite" : failure;
+    report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
     for (int b = 0; b < loading.bisections; ++b) {
       const Real mid = Real(0.5) * (low + high);
       PathPoint trial_point;
       std::string trial_failure;
       Vector trial = u;
       const bool trial_converged = solve_at(mid, trial, trial_point, trial_failure);
+      if (trial_converged && loading.end_at_load_maximum && !report.points.empty() &&
+          trial_point.load < report.points.back().load)
+        trial_point.stable = false;
       if (trial_converged && trial_point.stable) {
         u = trial;
         low = mid;

@@ -4,8 +4,9 @@
 // the supports' nodes stay at zero, and each increment is solved by projected Newton to the
 // residual tolerance from the previous equilibrium. After each increment the true
 // (unprojected) tangent is factorised: the static path ends at the first increment where it
-// is not positive definite (a bifurcation or limit point: buckling) or where Newton fails;
-// the travel there is bracketed by bisection.
+// is not positive definite (a bifurcation or limit point: buckling), where the load falls
+// (past a limit point; the only check where the true tangent is unusable, docs/statics.md)
+// or where Newton fails; the travel there is bracketed by bisection.
 #pragma once
 #include <functional>
 #include <string>
@@ -22,6 +23,7 @@ struct PlatenLoading {
   Real travel = 0;                    // m, total platen travel
   int increments = 10;
   bool check_stability = true;        // factorise the true tangent after each increment
+  bool end_at_load_maximum = true;    // a falling load also ends the path (a limit point)
   int bisections = 6;                 // halvings of the bracket around the instability
 };
 
