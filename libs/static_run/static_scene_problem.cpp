@@ -1,6 +1,7 @@
 #include "static_run/static_scene_problem.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "mpm/material.hpp"
@@ -83,12 +84,22 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   out.loading.platen_nodes = statics::nodes_reached_by(band, platen_x, platen_half);
   // Rigid bodies by geometry: the band nodes inside them (bonded: the static counterpart of
   // the explicit solver's no-slip grid coupling).
+  // A half-space short of the material is first moved into contact (the explicit run's
+  // travel before its first contact): its plane then passes through the nearest band nodes.
   for (const RigidBodySpec& r : scene.rigid_bodies) {
     auto& nodes = r.motion == RigidBodySpec::driven ? out.loading.platen_nodes : out.loading.support_nodes;
+    double gap = 0;
+    if (r.shape == RigidBodySpec::half_space) {
+      gap = std::numeric_limits<double>::infinity();
+      for (size_t n = 0; n < band.node_count(); ++n)
+        gap = std::min(gap, (band.node_position(n) - r.point).dot(r.normal.normalized()));
+      gap = std::max(gap, 0.0);
+      out.contact_gap = std::max(out.contact_gap, gap);
+    }
     for (size_t n = 0; n < band.node_count(); ++n) {
       const Eigen::Vector3d x = band.node_position(n);
       const bool inside = r.shape == RigidBodySpec::half_space
-                              ? (x - r.point).dot(r.normal.normalized()) <= 1e-9 * scene.cell_size
+                              ? (x - r.point).dot(r.normal.normalized()) <= gap + 1e-9 * scene.cell_size
                               : ((x - r.min).array() >= 0).all() && ((r.max - x).array() >= 0).all();
       if (inside) nodes.push_back(n);
     }

@@ -17,6 +17,7 @@ struct StaticSceneProblem {
   statics::PlatenLoading loading;
   std::vector<size_t> material_points;  // PointSet index of each problem point
   std::vector<Eigen::Vector3d> half_size;  // of every PointSet point, m
+  double contact_gap = 0;  // m: how far a rigid half-space was moved to touch the material
 };
 
 // Throws InputError (scene location) for what the static solver cannot run: free rigid

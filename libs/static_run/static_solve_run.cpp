@@ -106,7 +106,10 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
            std::to_string(sp.loading.platen_nodes.size()) + ", shape " + to_string(scene.shape) + ", cell " +
            format("%g", scene.cell_size) + " m");
   log.line("loading: travel " + format("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
-           " increments");
+           " increments" +
+           (sp.contact_gap > 0 ? ", from contact (the rigid platen first closed a gap of " +
+                                     format("%g", sp.contact_gap) + " m)"
+                               : ""));
 
   double speed = 0;  // of the one driven body (checked by make_static_problem)
   for (const auto& b : scene.bodies)
