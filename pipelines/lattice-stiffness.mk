@@ -44,15 +44,26 @@ lattice-stiffness:
 lattice-stiffness-results: $(LS_OUT)/stiffness.md
 	@echo "lattice-stiffness: results in $<"
 
-# latmpm-lattice's report (bounding box, footprint volume) is kept for the modulus.
+# Only the initial stiffness (seconds per lattice; the paths take minutes each).
+.PHONY: lattice-stiffness-initial
+lattice-stiffness-initial: $(foreach l,$(LS_LATTICES),$(LS_OUT)/run-$l-initial/wall_time.txt $(LS_OUT)/geometry-$l.txt)
+	bash $(LS_SRC)/table.sh $(LS_OUT) $(LS_PLATES:mm=) $(LS_LATTICES)
+
 $(LS_OUT)/geometry-%.h5: | $(BIN)/latmpm-lattice
 	@mkdir -p $(@D)
-	$(BIN)/latmpm-lattice --preset $* --cells $(LS_CELLS) --plates $(LS_PLATES) -o $@ > $(LS_OUT)/geometry-$*.txt
+	$(BIN)/latmpm-lattice --preset $* --cells $(LS_CELLS) --plates $(LS_PLATES) --quiet -o $@
+
+# latmpm-lattice's report (bounding box, footprint volume, on stderr) for the modulus.
+$(LS_OUT)/geometry-%.txt: | $(BIN)/latmpm-lattice
+	@mkdir -p $(@D)
+	$(BIN)/latmpm-lattice --preset $* --cells $(LS_CELLS) --plates $(LS_PLATES) -o $(@:.txt=-report.h5) 2> $@ \
+	  && rm -f $(@:.txt=-report.h5)
 
 $(LS_OUT)/points-%.h5: $(LS_OUT)/geometry-%.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(LS_CELL) --ppc 2 --quiet -o $@
 
-$(LS_OUT)/stiffness.md: $(foreach r,$(LS_RUNS),$r/wall_time.txt) $(LS_SRC)/table.sh pipelines/lattice-stiffness.mk
+$(LS_OUT)/stiffness.md: $(foreach r,$(LS_RUNS),$r/wall_time.txt) $(foreach l,$(LS_LATTICES),$(LS_OUT)/geometry-$l.txt) \
+  $(LS_SRC)/table.sh pipelines/lattice-stiffness.mk
 	bash $(LS_SRC)/table.sh $(LS_OUT) $(LS_PLATES:mm=) $(LS_LATTICES)
 
 .PRECIOUS: $(LS_OUT)/geometry-%.h5 $(LS_OUT)/points-%.h5

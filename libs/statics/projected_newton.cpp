@@ -37,6 +37,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
   NewtonReport report;
   const std::vector<char>& fixed = dirichlet.fixed;
   const Vector& f_ext = problem.external_force();
+  bool true_tangent_indefinite = false;  // found so once in this solve: not tried again
   for (int k = 0;; ++k) {
     const Vector f_int = problem.internal_force(u);
     const Vector g = f_int - f_ext;
@@ -59,7 +60,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
 
     // Newton direction (step 2–3): near the solution the true Hessian where it is
     // positive definite (quadratic convergence), otherwise the projected one.
-    const bool try_true = !boundary_moves && residual <= options.true_tangent_below;
+    const bool try_true = !boundary_moves && !true_tangent_indefinite && residual <= options.true_tangent_below;
     bool factorized = false;
     Vector rhs;
     for (const bool projected : {false, true}) {
@@ -82,6 +83,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
         if (!projected) ++report.true_tangent_steps;
         break;
       }
+      if (!projected) true_tangent_indefinite = true;
     }
     if (!factorized) {
       report.failure = "the projected Hessian is singular (a part of the body is not held)";

@@ -18,14 +18,16 @@ for l in "$@"; do
   fp=$(sed -n 's/.*\/ \([0-9.]*\) mm^3 footprint.*/\1/p' "$geo")
   e=$(awk -v k="$k" -v z0="$zmin" -v z1="$zmax" -v t="$plate" -v v="$fp" \
       'BEGIN { h = z1 - z0 - 2 * t; printf "%.4g", k * h * h / v }')  # N/mm · mm / mm² = MPa
-  end=$(sed -n 's/^\[[^]]*\] the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N.*/\1;\2;\3/p' "$path/log.txt" | tail -1)
-  if [ -n "$end" ]; then
+  end=$(sed -n 's/^\[[^]]*\] the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N.*/\1;\2;\3/p' "$path/log.txt" 2>/dev/null | tail -1 || true)
+  if [ ! -f "$path/wall_time.txt" ]; then
+    reason="path not run" travel="" load=""
+  elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
     travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')
   else
     reason="none within the travel" travel="" load=""
   fi
-  ci=$(sed -n 's/^cpu_s=//p' "$init/wall_time.txt") cp=$(sed -n 's/^cpu_s=//p' "$path/wall_time.txt")
+  ci=$(sed -n 's/^cpu_s=//p' "$init/wall_time.txt") cp=$(sed -n 's/^cpu_s=//p' "$path/wall_time.txt" 2>/dev/null || true)
   echo "$l,$k,$e,$load,$travel,$reason,$ci,$cp" >> "$csv.tmp"
 done
 mv "$csv.tmp" "$csv"
@@ -40,20 +42,26 @@ mv "$csv.tmp" "$csv"
   echo "|---|---|---|---|---|---|---|"
   awk -F, 'NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s / %s |\n", $1, $2, $3, ($4 == "" ? "—" : $4), ($5 == "" ? "—" : $5), $6, $7, $8 }' "$csv"
 } > "$md"
+# The instability panel only when some path ended (gnuplot refuses an all-empty column).
+ended=$(awk -F, 'NR > 1 && $4 != "" { n++ } END { print n + 0 }' "$csv")
+panel2=""
+if [ "$ended" -gt 0 ]; then
+  panel2='set ylabel "load (N)"; set title "first instability load (static path end)";
+plot "'"$csv"'" every ::1 using 0:4:xtic(1) with boxes notitle'
+fi
 gnuplot <<PLOT
-set terminal pngcairo size 900,420
+set terminal pngcairo size $([ "$ended" -gt 0 ] && echo 900 || echo 450),420
 set output "$out/stiffness.png"
 set datafile separator ","
-set multiplot layout 1,2
+set multiplot layout 1,$([ "$ended" -gt 0 ] && echo 2 || echo 1)
 set style fill solid 0.6
 set boxwidth 0.6
 set xtics rotate by 30 right
+set yrange [0:*]
 set ylabel "E* (MPa)"
 set title "effective modulus (static, linear elastic)"
 plot "$csv" every ::1 using 0:3:xtic(1) with boxes notitle
-set ylabel "load (N)"
-set title "first instability load (static path end)"
-plot "$csv" every ::1 using 0:(\$4 == 0 ? NaN : \$4):xtic(1) with boxes notitle
+$panel2
 unset multiplot
 PLOT
 echo "table.sh: $md" >&2
