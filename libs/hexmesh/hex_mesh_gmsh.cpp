@@ -85,8 +85,8 @@ void require_positive(double value, const char* field) {
 void mesh_and_collect(HexMesh& out, const std::string& msh_path) {
   gmsh::model::geo::synchronize();
   gmsh::model::mesh::generate(3);
-  if (!msh_path.empty()) gmsh::write(msh_path);
   out = collect_hexahedra("generated mesh", 1);
+  if (!msh_path.empty()) gmsh::write(msh_path);  // only a mesh that passed the checks
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
 #include "run_output/run_log.hpp"
+#include "run_output/run_status.hpp"
 #include "run_output/series_writer.hpp"
 #include "run_output/snapshot_writer.hpp"
 #include "scene/scene_points.hpp"
@@ -155,6 +156,18 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
              format("%.6g", path.last_stable_travel) + " m, " + format("%.6g", path.last_stable_load) + " N)");
   }
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
+  outcome.status = s.status == "not converged" ? "failed" : "finished";
+  outcome.exit_status = 0;
+  outcome.reason = path.ended ? "the static path ends (" + path.end_reason + ")" : "";
+  outcome.steps = s.increments;
+  outcome.simulated_time = s.travel / speed;
+  outcome.points = points.size();
+  outcome.wall_seconds = process_wall_seconds();
+  outcome.cpu_seconds = process_cpu_seconds();
+  outcome.stepping_wall_seconds = s.wall_seconds;
+  outcome.peak_memory_mb = process_peak_memory_mb();
+  write_run_status(run_dir, outcome, provenance);
   // latmpm-post reads "status:" (finished / failed) and "stopped:" (why) lines.
   if (path.ended)
     log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format("%.6g", path.end_travel) + " m");

@@ -19,7 +19,7 @@ for l in "$@"; do
   e=$(awk -v k="$k" -v z0="$zmin" -v z1="$zmax" -v t="$plate" -v v="$fp" \
       'BEGIN { h = z1 - z0 - 2 * t; printf "%.4g", k * h * h / v }')  # N/mm · mm / mm² = MPa
   end=$(sed -n 's/^\[[^]]*\] the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N.*/\1;\2;\3/p' "$path/log.txt" 2>/dev/null | tail -1 || true)
-  if [ ! -f "$path/wall_time.txt" ]; then
+  if [ ! -f "$path/done" ]; then
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
@@ -27,7 +27,7 @@ for l in "$@"; do
   else
     reason="none within the travel" travel="" load=""
   fi
-  ci=$(sed -n 's/^cpu_s=//p' "$init/wall_time.txt") cp=$(sed -n 's/^cpu_s=//p' "$path/wall_time.txt" 2>/dev/null || true)
+  ci=$(sed -n 's/^cpu_s = //p' "$init/status.toml") cp=$(sed -n 's/^cpu_s = //p' "$path/status.toml" 2>/dev/null || true)
   echo "$l,$k,$e,$load,$travel,$reason,$ci,$cp" >> "$csv.tmp"
 done
 mv "$csv.tmp" "$csv"

@@ -13,70 +13,19 @@
 #include "core/provenance.hpp"
 #include "run_output/snapshot_writer.hpp"
 #include "scene/scene.hpp"
+#include "solve_tool.hpp"
 #include "tiny_column.hpp"
 
 using namespace latmpm;
+using latmpm::test::read_text;
+using latmpm::test::run_solve;
+using latmpm::test::scratch;
+using latmpm::test::tiny_scene;
+using latmpm::test::ToolRun;
+using latmpm::test::write_scene;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("latmpm-solve-test-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    test::write_points(test::tiny_column({}), (d / "column.h5").string());
-    return d;
-  }();
-  return dir;
-}
-
-const std::string tiny_scene = R"([run]
-end = { plate_displacement = "0.2mm" }
-[grid]
-cell = "1mm"
-shape = "ugimp"
-[time]
-cfl = 0.3
-mass_scaling = 6
-[[points]]
-file = "column.h5"
-[bodies.column]
-role = "deformable"
-material = { E = "10MPa", nu = 0.4, density = "1050kg/m^3" }
-[bodies.bottom_plate]
-role = "fixed"
-[bodies.top_plate]
-role = "driven"
-velocity = ["0mm/s", "0mm/s", "-100mm/s"]
-[output]
-series_every = 25
-snapshot_every = 100
-)";
-
-std::string write_scene(const std::string& name, const std::string& text) {
-  const fs::path path = scratch() / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-struct ToolRun {
-  int status;
-  std::string err, out;
-};
-
-ToolRun run_solve(const std::string& args) {
-  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
-  const std::string cmd = std::string(LATMPM_BIN_DIR) + "/latmpm-solve " + args + " >" + out.string() +
-                          " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err), slurp(out)};
-}
 
 std::vector<std::vector<double>> read_csv(const fs::path& path, std::vector<std::string>* header) {
   std::ifstream in(path);
@@ -100,12 +49,6 @@ size_t column(const std::vector<std::string>& header, const std::string& name) {
   return 0;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 }  // namespace
 

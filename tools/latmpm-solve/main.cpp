@@ -2,12 +2,14 @@
 // run directory. Thin: the scene is read by libs/scene, the run and its outputs live in
 // libs/run_output (solve_run.hpp), the solver in libs/mpm.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "core/command_line.hpp"
 #include "core/errors.hpp"
 #include "core/provenance.hpp"
 #include "core/tool_main.hpp"
+#include "run_output/run_status.hpp"
 #include "run_output/solve_run.hpp"
 #include "scene/scene.hpp"
 #include "static_run/static_solve_run.hpp"
@@ -33,6 +35,14 @@ every_minutes minutes (default 10 minutes) and when run.max_steps stops it;
 series and snapshots, with the same results as a run that never stopped (--set may change
 run.max_steps, run.end, output and checkpoint keys for the rest of the run).
 
+The run directory also receives status.toml, written atomically at the start ("running") and
+at the end of every run, a failed one too, and when bad input stops a run whose directory
+exists: status, exit status, reason, steps, simulated time, wall and CPU seconds, particle-
+updates per second, points and peak memory. Pipelines read it, not the log.
+
+`latmpm-solve --list shapes` (schemes, materials, boundaries) prints what a scene can choose,
+one name a line: ask the tool, not the docs.
+
 Exit status: 0 done, 1 usage, 2 bad scene or points (FILE:LINE: key: problem; nothing
 written), 3 numerical failure (the log says why; series and snapshots so far are kept).
 
@@ -40,6 +50,8 @@ Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm
   $ latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5
   $ latmpm-voxelize c.h5 --cell 0.8mm --ppc 2 -o c-points.h5
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 -o run --quiet
+  $ cat run/status.toml
+  $ latmpm-solve --list shapes
   $ head -3 run/series.csv
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set grid.shape=linear --check
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set run.max_steps=100 -o half --quiet
@@ -63,8 +75,16 @@ int solve(int argc, char** argv) {
   cl.repeated_option("set", "KEY=VALUE", "override a scene key, e.g. --set grid.cell=0.4mm, --set points.0.file=p.h5");
   cl.option("threads", "N", "solver threads, 0 = all cores", "0");
   cl.flag("quiet", "no progress lines on stderr");
+  cl.option("list", "CHOICE", "print what a scene can choose, one a line, and exit: shapes, schemes, materials, boundaries");
   cl.flag("check", "read and check the scene, its points and the solver set-up, print the resolved scene, run nothing");
   cl.parse(argc, argv);
+  if (cl.given("list")) {
+    const auto names = scene_choice_names(cl.text("list"));
+    if (names.empty())
+      throw InputError("--list", "", "'" + cl.text("list") + "' is not one of shapes, schemes, materials, boundaries");
+    for (const auto& name : names) std::cout << name << "\n";
+    return exit_ok;
+  }
   const bool resume = cl.given("resume");
   if (resume && (cl.given("scene") || cl.given("output")))
     throw UsageError("--resume RUN_DIR takes the scene and the output directory from RUN_DIR: give no scene and no -o");
@@ -75,35 +95,44 @@ int solve(int argc, char** argv) {
   const long threads = cl.integer("threads");
   if (threads < 0) throw InputError("--threads", "", "must be 0 (all cores) or positive");
 
-  // 1. The scene, with the command line's overrides.
-  Scene scene = read_scene(resume ? run_dir + "/scene.toml" : cl.text("scene"), cl.all("set"));
-
-  // 2. Points and solver: every input error is found here, before anything is written.
   Provenance provenance = Provenance::for_run("latmpm-solve", argc, argv);
-  provenance.inputs.push_back(scene.source);
-  if (scene.solver.kind == SolverSpec::static_equilibrium && !cl.flag_set("check")) {
-    if (resume) throw UsageError("--resume: a static solve has no checkpoint; run it again");
-    const StaticSolveSummary s = run_static_scene(scene, provenance, run_dir, !cl.flag_set("quiet"));
-    std::printf("%s: static %s, %d increments, travel %.6g m, %zu points, %zu unknowns, wall %.2f s -> %s\n",
-                cl.tool().c_str(), s.status.c_str(), s.increments, s.travel, s.points, s.unknowns,
-                s.wall_seconds, run_dir.c_str());
-    if (s.end_travel > 0)
-      std::printf("%s: the static path ends at travel %.6g m, load %.6g N\n", cl.tool().c_str(), s.end_travel,
-                  s.end_load);
-    return exit_ok;
-  }
-  SolveOptions options;
-  options.threads = int(threads);
-  options.progress = !cl.flag_set("quiet");
-  options.resume = resume;
-  SolveRun run(scene, provenance, options);
-  if (cl.flag_set("check")) {
-    std::cout << scene.resolved_toml;
-    return exit_ok;
-  }
+  SolveSummary s;
+  try {
+    // 1. The scene, with the command line's overrides.
+    Scene scene = read_scene(resume ? run_dir + "/scene.toml" : cl.text("scene"), cl.all("set"));
 
-  // 3. The run.
-  SolveSummary s = run.run(run_dir);
+    // 2. Points and solver: every input error is found here, before anything is written.
+    provenance.inputs.push_back(scene.source);
+    if (scene.solver.kind == SolverSpec::static_equilibrium && !cl.flag_set("check")) {
+      if (resume) throw UsageError("--resume: a static solve has no checkpoint; run it again");
+      const StaticSolveSummary st = run_static_scene(scene, provenance, run_dir, !cl.flag_set("quiet"));
+      std::printf("%s: static %s, %d increments, travel %.6g m, %zu points, %zu unknowns, wall %.2f s -> %s\n",
+                  cl.tool().c_str(), st.status.c_str(), st.increments, st.travel, st.points, st.unknowns,
+                  st.wall_seconds, run_dir.c_str());
+      if (st.end_travel > 0)
+        std::printf("%s: the static path ends at travel %.6g m, load %.6g N\n", cl.tool().c_str(), st.end_travel,
+                    st.end_load);
+      return exit_ok;
+    }
+    SolveOptions options;
+    options.threads = int(threads);
+    options.progress = !cl.flag_set("quiet");
+    options.resume = resume;
+    SolveRun run(scene, provenance, options);
+    if (cl.flag_set("check")) {
+      std::cout << scene.resolved_toml;
+      return exit_ok;
+    }
+
+    // 3. The run.
+    s = run.run(run_dir);
+  } catch (const InputError& e) {
+    // Nothing else is written on bad input; a run directory that exists says why its run
+    // did not happen (a pipeline reads status.toml, not stderr).
+    if (!run_dir.empty() && !cl.flag_set("check") && std::filesystem::is_directory(run_dir))
+      write_run_status(run_dir, outcome_without_run("bad_input", exit_bad_input, e.what()), provenance);
+    throw;
+  }
   std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-updates/s, %zu particles -> %s\n",
               cl.tool().c_str(), s.status.c_str(), static_cast<long long>(s.steps), s.simulated_time,
               s.wall_seconds, s.updates_per_second, s.particles, run_dir.c_str());
