@@ -2,26 +2,13 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <set>
 #include <utility>
 
+#include "core/disjoint_sets.hpp"
 #include "geometry/strut_graph_builder.hpp"
 
 namespace latmpm {
-namespace {
-
-struct DisjointSets {
-  std::vector<size_t> parent;
-  explicit DisjointSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  size_t find(size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(size_t a, size_t b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
 
 double distance_to_box(const Eigen::Vector3d& x, const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
   return (x.cwiseMax(min).cwiseMin(max) - x).norm();
@@ -47,7 +34,7 @@ size_t count_duplicate_struts(const StrutGraph& graph) {
 
 Pieces connected_pieces(const StrutGraph& graph, double tolerance) {
   const size_t nodes = graph.nodes.size();
-  DisjointSets sets(nodes + graph.plates.size());
+  DisjointSets<> sets(nodes + graph.plates.size());
   for (const Strut& s : graph.struts) {
     sets.join(s.a, s.b);
     for (size_t p = 0; p < graph.plates.size(); ++p)

@@ -3,6 +3,10 @@
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
+#include <cmath>
+
+#include "levelset/level_set_units.hpp"
+
 namespace latmpm {
 
 TriangleMesh level_set_to_mesh(const openvdb::FloatGrid& level_set) {
@@ -13,7 +17,8 @@ TriangleMesh level_set_to_mesh(const openvdb::FloatGrid& level_set) {
                                /*adaptivity=*/0.0, /*relaxDisorientedTriangles=*/true);
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
-  for (const auto& p : points) mesh.vertices.emplace_back(p.x(), p.y(), p.z());
+  for (const auto& p : points)
+    mesh.vertices.push_back(Eigen::Vector3d(p.x(), p.y(), p.z()) / grid_units_per_metre);
   mesh.triangles.reserve(triangles.size() + 2 * quads.size());
   // volumeToMesh orders polygons clockwise seen from outside (for a level set, negative
   // inside); we store counter-clockwise, so every polygon is reversed.
@@ -33,7 +38,7 @@ TriangleMesh level_set_to_mesh(const openvdb::FloatGrid& level_set) {
 }
 
 double level_set_volume(const openvdb::FloatGrid& level_set) {
-  return openvdb::tools::levelSetVolume(level_set);
+  return openvdb::tools::levelSetVolume(level_set) / std::pow(grid_units_per_metre, 3);
 }
 
 }  // namespace latmpm

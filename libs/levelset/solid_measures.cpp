@@ -5,12 +5,13 @@
 
 #include "geometry/plates.hpp"
 #include "levelset/level_set_mesh.hpp"
+#include "levelset/level_set_units.hpp"
 
 namespace latmpm {
 
 SolidMeasures measure_solid(const StrutGraph& graph, const openvdb::FloatGrid& level_set) {
   SolidMeasures m;
-  m.voxel_size = level_set.voxelSize()[0];
+  m.voxel_size = level_set.voxelSize()[0] / grid_units_per_metre;
   m.solid_volume = level_set_volume(level_set);
   for (const Plate& p : graph.plates) m.plate_volume += (p.max - p.min).prod();
   m.lattice_volume = m.solid_volume - m.plate_volume;

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "levelset/level_set_units.hpp"
 #include "levelset/solid_primitive.hpp"
 
 namespace latmpm {
@@ -32,13 +33,15 @@ namespace {
 using LeafType = openvdb::FloatTree::LeafNodeType;
 constexpr int leaf_dim = LeafType::DIM;  // 8
 
+// The primitives in grid units (level_set_units.hpp).
 std::vector<SolidPrimitive> primitives_of(const StrutGraph& graph) {
   std::vector<SolidPrimitive> out;
   const auto kind = graph.strut_ends == StrutEnds::flat ? SolidPrimitive::Kind::cylinder
                                                         : SolidPrimitive::Kind::capsule;
+  const double k = grid_units_per_metre;
   for (const Strut& s : graph.struts)
-    out.push_back({kind, graph.nodes[s.a], graph.nodes[s.b], s.radius});
-  for (const Plate& p : graph.plates) out.push_back({SolidPrimitive::Kind::box, p.min, p.max, 0});
+    out.push_back({kind, k * graph.nodes[s.a], k * graph.nodes[s.b], k * s.radius});
+  for (const Plate& p : graph.plates) out.push_back({SolidPrimitive::Kind::box, k * p.min, k * p.max, 0});
   return out;
 }
 
@@ -66,15 +69,16 @@ openvdb::FloatGrid::Ptr strut_graph_level_set(const StrutGraph& graph, double vo
 openvdb::FloatGrid::Ptr strut_graph_level_set(const StrutGraph& graph, double voxel_size_m,
                                               double half_width_voxels,
                                               const std::function<void(double)>& progress) {
-  if (!(voxel_size_m > 0) || !std::isfinite(voxel_size_m))
-    throw std::invalid_argument("strut_graph_level_set: voxel size must be positive");
+  if (!(voxel_size_m >= smallest_voxel_m) || !std::isfinite(voxel_size_m))
+    throw std::invalid_argument("strut_graph_level_set: voxel size must be at least 0.1 um");
   if (!(half_width_voxels >= 1))
     throw std::invalid_argument("strut_graph_level_set: band half-width must be at least 1 voxel");
   openvdb::initialize();
-  const double h = voxel_size_m, w = half_width_voxels * h;
+  // Lengths and distances below are in grid units (mm), not metres.
+  const double h = voxel_size_m * grid_units_per_metre, w = half_width_voxels * h;
   const float background = float(w);
   auto grid = openvdb::FloatGrid::create(background);
-  grid->setTransform(openvdb::math::Transform::createLinearTransform(h));
+  grid->setTransform(level_set_transform(voxel_size_m));
   grid->setGridClass(openvdb::GRID_LEVEL_SET);
   grid->setName("solid");
   const std::vector<SolidPrimitive> primitives = primitives_of(graph);

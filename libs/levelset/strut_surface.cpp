@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "levelset/level_set_mesh.hpp"
+#include "levelset/level_set_units.hpp"
 #include "levelset/strut_level_set.hpp"
 
 namespace latmpm {
@@ -22,7 +23,7 @@ TriangleMesh strut_graph_surface(const StrutGraph& graph, double voxel_size_m,
   // volumeToMesh reads only the voxels next to the surface: a ±2-voxel band meshes exactly
   // as ±3 does, in a third less time.
   auto grid = strut_graph_level_set(shifted, voxel_size_m, 2.0, progress);
-  const float nudge = float(1e-3 * voxel_size_m);
+  const float nudge = float(1e-3 * voxel_size_m * grid_units_per_metre);
   openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid->tree());
   leaves.foreach([nudge](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
     for (auto v = leaf.beginValueOn(); v; ++v)

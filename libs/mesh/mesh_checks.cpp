@@ -15,6 +15,8 @@
 #include <sstream>
 #include <vector>
 
+#include "core/disjoint_sets.hpp"
+
 namespace latmpm {
 namespace {
 
@@ -123,6 +125,34 @@ double signed_volume(const TriangleMesh& mesh) {
   return six_v / 6.0;
 }
 
+size_t shell_of_triangles(const TriangleMesh& mesh, std::vector<int32_t>& shell) {
+  DisjointSets<int32_t> sets(mesh.vertices.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 1; k < 3; ++k) sets.join(t[0], t[k]);
+  std::vector<int32_t> number(mesh.vertices.size(), -1);
+  size_t shells = 0;
+  shell.resize(mesh.triangles.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    int32_t& n = number[sets.find(mesh.triangles[f][0])];
+    if (n < 0) n = static_cast<int32_t>(shells++);
+    shell[f] = n;
+  }
+  return shells;
+}
+
+std::vector<double> shell_volumes(const TriangleMesh& mesh, const std::vector<int32_t>& shell, size_t shells) {
+  std::vector<double> six_v(shells, 0.0);
+  if (mesh.vertices.empty()) return six_v;
+  const Eigen::Vector3d o = mesh.vertices.front();  // as signed_volume: limits cancellation
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    const Eigen::Vector3d a = mesh.vertices[t[0]] - o, b = mesh.vertices[t[1]] - o, c = mesh.vertices[t[2]] - o;
+    six_v[size_t(shell[f])] += a.dot(b.cross(c));
+  }
+  for (double& v : six_v) v /= 6.0;
+  return six_v;
+}
+
 MeshReport check_mesh(const TriangleMesh& mesh, bool find_self_intersections) {
   MeshReport report;
   report.vertices = mesh.vertices.size();
@@ -134,6 +164,10 @@ MeshReport check_mesh(const TriangleMesh& mesh, bool find_self_intersections) {
   const double v = signed_volume(mesh);
   report.volume = std::fabs(v);
   report.outward = v > 0;
+  std::vector<int32_t> shell;
+  report.shells = shell_of_triangles(mesh, shell);
+  for (double shell_volume : shell_volumes(mesh, shell, report.shells))
+    report.cavities += (shell_volume > 0) != (v > 0) && shell_volume != 0;
   if (find_self_intersections) {
     report.self_intersecting_pairs = count_self_intersections(mesh, flags);
     report.self_intersections_searched = true;
@@ -152,7 +186,8 @@ std::string describe(const MeshReport& r) {
   }
   s << ", " << (r.consistently_oriented ? "consistently oriented" : "INCONSISTENTLY oriented");
   if (r.closed() && r.consistently_oriented) s << (r.outward ? " outward" : " inward");
-  s << ", volume " << r.volume << " m^3";
+  s << ", volume " << r.volume << " m^3, " << r.shells << (r.shells == 1 ? " shell" : " shells");
+  if (r.cavities) s << " (" << r.cavities << (r.cavities == 1 ? " cavity" : " cavities") << ")";
   s << "\n  degenerate faces " << r.degenerate_faces << ", duplicate faces " << r.duplicate_faces
     << ", self-intersecting pairs ";
   if (r.self_intersections_searched) s << r.self_intersecting_pairs;

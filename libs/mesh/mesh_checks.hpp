@@ -6,6 +6,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "mesh/triangle_mesh.hpp"
 
@@ -22,6 +23,10 @@ struct MeshReport {
   bool consistently_oriented = false;  // every two-triangle edge is used once each way
   bool outward = false;  // signed volume > 0: counter-clockwise seen from outside
   double volume = 0;     // m³, |signed volume| by the divergence theorem (exact if closed)
+  // Shells: connected sets of triangles (sharing vertices). A cavity is a shell whose signed
+  // volume has the opposite sign of the whole: an inner surface facing into the void, which
+  // is part of a hollow solid (the voxelizer keeps it empty).
+  size_t shells = 0, cavities = 0;
 
   bool closed() const { return triangles > 0 && boundary_edges == 0 && non_manifold_edges == 0; }
   // A closed, consistently oriented surface that encloses volume: meshToLevelSet classifies
@@ -45,5 +50,12 @@ std::string describe(const MeshReport& report);
 // Signed volume by the divergence theorem, Σ a·(b×c)/6 (m³); positive for an outward
 // closed surface.
 double signed_volume(const TriangleMesh& mesh);
+
+// The shell (connected component over shared vertices) of each triangle, numbered from 0 in
+// order of first appearance; returns the number of shells.
+size_t shell_of_triangles(const TriangleMesh& mesh, std::vector<int32_t>& shell);
+
+// Signed volume of each shell (m³), indexed as shell_of_triangles numbers them.
+std::vector<double> shell_volumes(const TriangleMesh& mesh, const std::vector<int32_t>& shell, size_t shells);
 
 }  // namespace latmpm

@@ -1,7 +1,7 @@
 #include "mesh/mesh_repair.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -11,17 +11,20 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Surface_mesh.h>
 
+#include <cmath>
 #include <iterator>
 #include <map>
+
+#include "mesh/box_face_caps.hpp"
+#include "mesh/cgal_surface.hpp"
+#include "mesh/vertex_weld.hpp"
 
 namespace latmpm {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Surface = CGAL::Surface_mesh<Point>;
+using cgal::Point;
+using cgal::Surface;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 std::string plural(size_t n, const std::string& word) {
@@ -51,6 +54,7 @@ size_t fill_small_holes(Surface& surface, size_t max_edges, RepairReport& report
     }
     ++report.holes_filled;
     report.hole_faces_added += added.size();
+    for (auto f : added) report.filled_area += PMP::face_area(f, surface);
   }
   return left;
 }
@@ -139,7 +143,22 @@ RepairReport repair_mesh(TriangleMesh& mesh, const RepairOptions& options) {
   report.edges_stitched = PMP::stitch_borders(surface);
   if (report.edges_stitched) report.actions.push_back("stitched " + plural(report.edges_stitched, "border edge pair"));
 
-  // 5. Small holes are triangulated.
+  // 5. Openings in the bounding box's face planes get planar caps (a part clipped at its
+  //    box), the tolerance that of the weld (vertex_weld.hpp); other small holes are
+  //    triangulated.
+  {
+    CGAL::Bbox_3 box;
+    for (const Point& p : points) box += p.bbox();
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                      CGAL::square(box.zmax() - box.zmin()));
+    const CapReport caps = cap_box_face_openings(surface, default_weld_fraction * diagonal);
+    report.loops_capped = caps.loops_capped;
+    report.cap_faces_added = caps.faces_added;
+    report.cap_area = caps.area;
+    if (caps.loops_capped)
+      report.actions.push_back("capped " + plural(caps.loops_capped, "opening") + " on the bounding box's faces with " +
+                               plural(caps.faces_added, "triangle"));
+  }
   report.holes_left = fill_small_holes(surface, options.max_hole_edges, report);
   if (report.holes_filled)
     report.actions.push_back("filled " + plural(report.holes_filled, "hole") + " with " +
@@ -152,6 +171,8 @@ RepairReport repair_mesh(TriangleMesh& mesh, const RepairOptions& options) {
   orient_outward(surface, report);
   if (report.components_reversed)
     report.actions.push_back("turned " + plural(report.components_reversed, "component") + " outward");
+
+  report.surface_area = PMP::area(surface);
 
   // Back to the plain mesh.
   std::vector<Point> out_points;

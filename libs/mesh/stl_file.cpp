@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -127,7 +128,12 @@ class AsciiTokens {
     auto [end, ec] = std::from_chars(first, last, value);
     if (first == last || end != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
       fail("expected a number, found " + quoted(text_.substr(start, pos_ - start)));
-    if (ec == std::errc::result_out_of_range && std::fabs(value) > 1) value = INFINITY;
+    // from_chars leaves `value` untouched (0) when out of range: 1e999 would read as 0.
+    if (ec == std::errc::result_out_of_range)
+      fail("number " + quoted(text_.substr(start, pos_ - start)) + " is out of range");
+    if (std::isfinite(value) && std::fabs(value) > std::numeric_limits<float>::max())
+      fail("number " + quoted(text_.substr(start, pos_ - start)) +
+           " is beyond single precision (STL coordinates are floats)");
     return static_cast<float>(value);
   }
   void skip_line() {

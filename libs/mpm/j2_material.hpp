@@ -17,6 +17,8 @@
 
 #include "mpm/deformation.hpp"
 #include "mpm/j2_plasticity.hpp"
+#include "mpm/material.hpp"
+#include "mpm/material_history.hpp"
 
 namespace latmpm::mpm {
 
@@ -24,22 +26,31 @@ struct J2Plastic {
   J2Parameters parameters;
   Real density = 0;  // kg/m³, mass scaling included
 
-  static constexpr int history_count = 8;
-  static constexpr std::array<const char*, history_count> history_names = {
-      "j2_be_xx", "j2_be_yy", "j2_be_zz", "j2_be_yz", "j2_be_xz", "j2_be_xy", "j2_alpha", "j2_plastic_work"};
-  static constexpr std::array<Real, history_count> history_initial = {1, 1, 1, 0, 0, 0, 0, 0};
+  // The particle history columns (material_history.hpp), in the order update_stress uses.
+  static constexpr std::array<HistoryVariable, 8> history{{{"j2_be_xx", 1},
+                                                           {"j2_be_yy", 1},
+                                                           {"j2_be_zz", 1},
+                                                           {"j2_be_yz", 0},
+                                                           {"j2_be_xz", 0},
+                                                           {"j2_be_xy", 0},
+                                                           {"j2_alpha", 0},
+                                                           {"j2_plastic_work", 0}}};
+
+  static J2Plastic from(const MaterialParameters& m, Real mass_scaling) {
+    return {j2_parameters(m), m.density * mass_scaling};
+  }
 
   template <class T>
-  void update_stress(const Deformation<T>& d, Stress<T>& s, T* history) const {
-    for (int q = 0; q < lanes<T>; ++q) update_lane(d, s, history, q);
+  void update_stress(const Deformation<T>& d, Stress<T>& s, T* values) const {
+    for (int q = 0; q < lanes<T>; ++q) update_lane(d, s, values, q);
   }
 
   // ψ(be) of Eq. 12 per reference volume, J/m³ (the stress argument is not needed).
   template <class T>
-  T strain_energy_density(const Deformation<T>& /*d*/, const Stress<T>& /*s*/, const T* history) const {
+  T strain_energy_density(const Deformation<T>& /*d*/, const Stress<T>& /*s*/, const T* values) const {
     T out{};
     for (int q = 0; q < lanes<T>; ++q) {
-      const J2State state = lane_state(history, q);
+      const J2State state = lane_state(values, q);
       set(out, q, idle(state) ? Real(0) : j2_stored_energy(parameters, state));
     }
     return out;
@@ -62,17 +73,17 @@ struct J2Plastic {
   static void set(Pack& x, int q, Real v) { x[q] = v; }
 
   template <class T>
-  static J2State lane_state(const T* history, int q) {
+  static J2State lane_state(const T* values, int q) {
     J2State state;
-    for (int c = 0; c < 6; ++c) state.elastic_left_cauchy_green[c] = get(history[c], q);
-    state.plastic_arc_length = get(history[6], q);
+    for (int c = 0; c < 6; ++c) state.elastic_left_cauchy_green[c] = get(values[c], q);
+    state.plastic_arc_length = get(values[6], q);
     return state;
   }
   static bool idle(const J2State& state) { return state.elastic_left_cauchy_green.head<3>().sum() == 0; }
 
   template <class T>
-  void update_lane(const Deformation<T>& d, Stress<T>& s, T* history, int q) const {
-    const J2State state = lane_state(history, q);
+  void update_lane(const Deformation<T>& d, Stress<T>& s, T* values, int q) const {
+    const J2State state = lane_state(values, q);
     if (idle(state)) {
       for (int c = 0; c < 6; ++c) set(s[c], q, 0);
       return;
@@ -82,9 +93,9 @@ struct J2Plastic {
       for (int b = 0; b < 3; ++b) f(a, b) = (a == b) + d.dt * get(d.velocity_gradient[a][b], q);
     try {
       const J2Update u = j2_update(parameters, f, state);
-      for (int c = 0; c < 6; ++c) set(s[c], q, u.cauchy[c]), set(history[c], q, u.state.elastic_left_cauchy_green[c]);
-      set(history[6], q, u.state.plastic_arc_length);
-      set(history[7], q, get(history[7], q) + u.dissipation);
+      for (int c = 0; c < 6; ++c) set(s[c], q, u.cauchy[c]), set(values[c], q, u.state.elastic_left_cauchy_green[c]);
+      set(values[6], q, u.state.plastic_arc_length);
+      set(values[7], q, get(values[7], q) + u.dissipation);
     } catch (const std::exception&) {
       for (int c = 0; c < 6; ++c) set(s[c], q, std::numeric_limits<Real>::quiet_NaN());
     }

@@ -8,18 +8,20 @@
 #pragma once
 #include <variant>
 
+#include "mpm/j2_material.hpp"
 #include "mpm/linear_elastic.hpp"
 #include "mpm/material_history.hpp"
 #include "mpm/neo_hookean.hpp"
 
 namespace latmpm::mpm {
 
-using MaterialModel = std::variant<LinearElastic, NeoHookean>;
+using MaterialModel = std::variant<LinearElastic, NeoHookean, J2Plastic>;
 
 inline MaterialModel make_material_model(const MaterialParameters& m, Real mass_scaling) {
   switch (m.kind) {
     case MaterialKind::linear_elastic: return LinearElastic::from(m, mass_scaling);
     case MaterialKind::neo_hookean: return NeoHookean::from(m, mass_scaling);
+    case MaterialKind::j2: return J2Plastic::from(m, mass_scaling);
   }
   return LinearElastic::from(m, mass_scaling);
 }

@@ -39,8 +39,8 @@ constexpr std::array<std::pair<ShapeFunctionKind, const char*>, 6> shape_names{{
 }};
 constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
     {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};
-constexpr std::array<std::pair<MaterialKind, const char*>, 2> material_names{{
-    {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}}};
+constexpr std::array<std::pair<MaterialKind, const char*>, 3> material_names{{
+    {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}, {MaterialKind::j2, "j2"}}};
 constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{
     {BodyRole::deformable, "deformable"}, {BodyRole::fixed, "fixed"}, {BodyRole::driven, "driven"}}};
 }  // namespace

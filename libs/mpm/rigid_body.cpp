@@ -59,15 +59,13 @@ bool rigid_body_contains(const RigidBodySettings& b, const Vec3& d, const Vec3& 
 }
 
 namespace {
-// Calls fn(node, body) for every node with mass, free of point-body constraints, inside a
-// rigid body (the first that contains it), block by block in parallel; fn gets the block index.
+// Calls fn(block, node) for every node with mass whose support overlaps the body and that no
+// other body holds (constraint lane 0, or this body's marker), after claiming it; block by
+// block in parallel.
 template <class Fn>
-void for_each_rigid_node(SparseGrid& grid, Real h, const std::vector<RigidBodySettings>& bodies,
-                         const std::vector<RigidBodyState>& states, Fn&& fn) {
+void for_each_claimed_node(SparseGrid& grid, Real h, const RigidBodySettings& body, const RigidBodyState& state,
+                           Real marker, Fn&& fn) {
   constexpr int bw = SparseGrid::block_width;
-  bool any_no_slip = false;
-  for (const auto& body : bodies) any_no_slip |= body.coupling == RigidCoupling::no_slip;
-  if (!any_no_slip) return;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.block_count(), 8), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t b = r.begin(); b < r.end(); ++b) {
       const auto c = grid.coord(b);
@@ -76,29 +74,23 @@ void for_each_rigid_node(SparseGrid& grid, Real h, const std::vector<RigidBodySe
         for (int j = 0; j < bw; ++j)
           for (int k = 0; k < bw; ++k) {
             Real* node = block + SparseGrid::node_offset(i, j, k);
-            if (!(node[lane::mass] > 0) || node[lane::constraint] > 0) continue;
+            const Real taken = node[lane::constraint];
+            if (!(node[lane::mass] > 0) || (taken != 0 && taken != marker)) continue;
             const Vec3 x = SparseGrid::node_position(c[0] * bw + i, c[1] * bw + j, c[2] * bw + k, h);
-            for (size_t body = 0; body < bodies.size(); ++body)
-              if (bodies[body].coupling == RigidCoupling::no_slip &&
-                  rigid_body_contains(bodies[body], states[body].displacement, x, h)) {
-                fn(b, node, body);
-                break;
-              }
+            if (!rigid_body_contains(body, state.displacement, x, h)) continue;
+            node[lane::constraint] = marker;
+            fn(b, node);
           }
     }
   });
 }
 }  // namespace
 
-std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,
-                                      const std::vector<RigidBodySettings>& bodies,
-                                      const std::vector<RigidBodyState>& states) {
-  const size_t nb = bodies.size();
-  std::vector<Vec3> out(nb, Vec3::Zero());
-  if (nb == 0) return out;
-  std::vector<Vec3> block_force(grid.block_count() * nb, Vec3::Zero());
-  for_each_rigid_node(grid, h, bodies, states, [&](size_t b, Real* node, size_t body) {
-    const Vec3& V = states[body].velocity;
+Vec3 couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body, const RigidBodyState& state,
+                       Real marker) {
+  std::vector<Vec3> block_force(grid.block_count(), Vec3::Zero());
+  const Vec3& V = state.velocity;
+  for_each_claimed_node(grid, h, body, state, marker, [&](size_t b, Real* node) {
     const Real m = node[lane::mass];
     Vec3 change;
     for (int a = 0; a < 3; ++a) {
@@ -106,19 +98,17 @@ std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,
       node[lane::momentum + a] = V[a];
       node[lane::force + a] += change[a];  // Δv = V − v_old
     }
-    block_force[b * nb + body] += (m / dt) * change;
+    block_force[b] += (m / dt) * change;
   });
-  for (size_t b = 0; b < grid.block_count(); ++b)
-    for (size_t k = 0; k < nb; ++k) out[k] += block_force[b * nb + k];
+  Vec3 out = Vec3::Zero();
+  for (size_t b = 0; b < grid.block_count(); ++b) out += block_force[b];
   return out;
 }
 
-void impose_rigid_velocities(SparseGrid& grid, Real h, int lane,
-                             const std::vector<RigidBodySettings>& bodies,
-                             const std::vector<RigidBodyState>& states) {
-  if (bodies.empty()) return;
-  for_each_rigid_node(grid, h, bodies, states, [&](size_t, Real* node, size_t body) {
-    for (int a = 0; a < 3; ++a) node[lane + a] = states[body].velocity[a];
+void impose_rigid_velocity(SparseGrid& grid, Real h, int lane, const RigidBodySettings& body,
+                           const RigidBodyState& state, Real marker) {
+  for_each_claimed_node(grid, h, body, state, marker, [&](size_t, Real* node) {
+    for (int a = 0; a < 3; ++a) node[lane + a] = state.velocity[a];
   });
 }
 

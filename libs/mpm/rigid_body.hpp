@@ -90,19 +90,18 @@ struct RigidBodyState {
 bool rigid_body_contains(const RigidBodySettings& body, const Vec3& displacement, const Vec3& x, Real h);
 
 // After update_grid_velocities (lanes m, v_new, Δv, constraint): every node with mass, not
-// held by a point-defined body, inside no-slip body k takes V_k (penalty bodies are skipped:
-// their reaction is zero here); Δv is corrected to match. Returns
-// per body the reaction Σ m (V − v_new)/dt (N). Nodes inside two bodies go to the first.
-// Deterministic (per-block sums added in block order).
-std::vector<Vec3> couple_rigid_bodies(SparseGrid& grid, Real h, Real dt,
-                                      const std::vector<RigidBodySettings>& bodies,
-                                      const std::vector<RigidBodyState>& states);
+// held by a point-defined body (constraint lane > 0) nor claimed by another geometric body
+// (lane < 0), whose support overlaps the body takes its velocity V and is claimed with
+// `marker` (< 0: −(rigid index + 1)); Δv is corrected to match. Called for the bodies in
+// order, a node inside two bodies goes to the first. Returns the reaction
+// Σ m (V − v_new)/dt (N); deterministic (per-block sums added in block order).
+Vec3 couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body,
+                       const RigidBodyState& state, Real marker);
 
-// The same constraint on a velocity field in lanes [lane, lane + 3) without reactions (MUSL's
+// The same constraint on a velocity field in lanes [lane, lane + 3) without a reaction (MUSL's
 // remapped velocity, USF's start-of-step velocity).
-void impose_rigid_velocities(SparseGrid& grid, Real h, int lane,
-                             const std::vector<RigidBodySettings>& bodies,
-                             const std::vector<RigidBodyState>& states);
+void impose_rigid_velocity(SparseGrid& grid, Real h, int lane, const RigidBodySettings& body,
+                           const RigidBodyState& state, Real marker);
 
 // Advances a body over a step of length dt after the grid update gave its reaction (a fixed
 // body stays at rest and only records it).

@@ -6,6 +6,7 @@
 
 #include <map>
 
+#include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/simulation_impl.hpp"
 #include "points/point_set.hpp"
@@ -62,6 +63,10 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
   }
   for (const auto& b : bodies_)
     if (b.role == BodyRole::driven) check_body_speed(b.velocity.norm(), where, "bodies." + b.name + ".velocity");
+  // Point-defined boundaries: fixed and driven bodies, deformable bodies' held points.
+  for (size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].role != BodyRole::deformable || !bodies_[b].hold_tag.empty())
+      boundaries_.push_back(PointBoundary{b, bodies_[b].name, bodies_[b].role, impl_->body_info[b].velocity});
 
   // Particles from the points.
   const size_t n = points.size();
@@ -120,19 +125,11 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
 
-  // Bounding boxes of the rigid point bodies at the start (check_bodies_apart).
-  body_lo_.assign(bodies_.size(), Vec3::Constant(std::numeric_limits<Real>::infinity()));
-  body_hi_.assign(bodies_.size(), Vec3::Constant(-std::numeric_limits<Real>::infinity()));
-  body_pad_.assign(bodies_.size(), Vec3::Zero());
-  for (size_t p = 0; p < n; ++p) {
-    const size_t b = size_t(points.body[p]);
-    body_lo_[b] = body_lo_[b].cwiseMin(Vec3(points.position[p]));
-    body_hi_[b] = body_hi_[b].cwiseMax(Vec3(points.position[p]));
-    body_pad_[b] = body_pad_[b].cwiseMax(particles_.half_size0[p]);
-  }
   diagnostics_.body_displacement.assign(bodies_.size(), Vec3::Zero());
   diagnostics_.reaction.assign(bodies_.size(), Vec3::Zero());
   diagnostics_.stable_dt = stable_time_step();
+  // The built-in observers (observers.hpp): the first to see each step.
+  observers_.push_back(BodiesApartCheck(*this));
 }
 
 Simulation::~Simulation() = default;
@@ -166,95 +163,6 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
   }
 }
 
-// A driven body that has reached a fixed one along its direction of motion, with their
-// footprints overlapping, has squeezed out all the material between them: their
-// constraints then fight over the same nodes and the run goes on with nonsense (measured: a
-// plate driven 20 mm into a 16 mm column finished, the column's points dragged through the
-// base, 88 % of the work unaccounted for). Point bodies by their points' box plus the points'
-// domain half-size (the body's surface), rigid boxes by their geometry. (Closer than a cell
-// is allowed: paper-style densification runs end with less than a cell of material left.)
-// Fixed rigid bodies count like fixed point bodies: a box by its geometry; a half-space,
-// unbounded across its normal, has no footprint to miss, so a driven body approaching it
-// is caught once its nearest corner crosses the surface. (Driven half-spaces, unbounded
-// themselves, are not checked.)
-void Simulation::check_bodies_apart() const {
-  struct Box {
-    std::string name;
-    Vec3 lo, hi, velocity;
-  };
-  auto fail = [&](const std::string& driven_name, const std::string& fixed_name, Real gap) {
-    std::ostringstream msg;
-    msg << "step " << diagnostics_.step << " (t = " << diagnostics_.time << " s): the driven body '" << driven_name
-        << "' has reached the fixed body '" << fixed_name << "' (gap " << gap
-        << " m): no material is left between them to compress, and their constraints would fight over "
-           "the same grid nodes; end the run earlier (run.end)";
-    throw NumericalError(msg.str());
-  };
-  std::vector<Box> driven, fixed;
-  for (size_t b = 0; b < bodies_.size(); ++b) {
-    if (bodies_[b].role == BodyRole::deformable || !(body_lo_[b][0] <= body_hi_[b][0])) continue;
-    Box box{bodies_[b].name, body_lo_[b] - body_pad_[b], body_hi_[b] + body_pad_[b], bodies_[b].velocity};
-    if (bodies_[b].role == BodyRole::fixed) {
-      fixed.push_back(box);
-    } else {
-      box.lo += diagnostics_.body_displacement[b];
-      box.hi += diagnostics_.body_displacement[b];
-      driven.push_back(box);
-    }
-  }
-  for (size_t k = 0; k < rigid_bodies_.size(); ++k)
-    if (rigid_bodies_[k].motion == RigidMotion::driven && rigid_bodies_[k].shape == RigidShape::box)
-      driven.push_back({rigid_bodies_[k].name, rigid_bodies_[k].box_min + rigid_states_[k].displacement,
-                        rigid_bodies_[k].box_max + rigid_states_[k].displacement, rigid_states_[k].velocity});
-  std::vector<size_t> fixed_half_spaces;
-  for (size_t k = 0; k < rigid_bodies_.size(); ++k) {
-    if (rigid_bodies_[k].motion != RigidMotion::fixed) continue;
-    if (rigid_bodies_[k].shape == RigidShape::box)
-      fixed.push_back({rigid_bodies_[k].name, rigid_bodies_[k].box_min, rigid_bodies_[k].box_max, Vec3::Zero()});
-    else
-      fixed_half_spaces.push_back(k);
-  }
-  for (const Box& d : driven) {
-    if (!(d.velocity.norm() > 0)) continue;
-    const Vec3 a = d.velocity.normalized();
-    for (const Box& f : fixed) {
-      // Footprints across a overlap (the boxes overlap in the plane normal to a) ...
-      bool across = true;
-      for (int axis = 0; axis < 3; ++axis)
-        if (std::abs(a[axis]) < 0.5 && (d.hi[axis] < f.lo[axis] || f.hi[axis] < d.lo[axis])) across = false;
-      if (!across) continue;
-      // ... and the gap along a, from the driven body's front to the fixed body's back.
-      Real front = -std::numeric_limits<Real>::infinity(), back = std::numeric_limits<Real>::infinity();
-      for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 cd((corner & 1) ? d.hi[0] : d.lo[0], (corner & 2) ? d.hi[1] : d.lo[1], (corner & 4) ? d.hi[2] : d.lo[2]);
-        const Vec3 cf((corner & 1) ? f.hi[0] : f.lo[0], (corner & 2) ? f.hi[1] : f.lo[1], (corner & 4) ? f.hi[2] : f.lo[2]);
-        front = std::max(front, cd.dot(a));
-        back = std::min(back, cf.dot(a));
-      }
-      // Bodies that start apart (or touching) and close to less than a cell; a fixed body
-      // behind the driven one, or beside it along a, never counts.
-      const Real gap = back - front, start_gap = gap + d.velocity.norm() * diagnostics_.time;
-      if (!(start_gap >= 0 && gap <= 0)) continue;
-      fail(d.name, f.name, gap);
-    }
-    for (size_t k : fixed_half_spaces) {
-      // The gap along the half-space's normal n, from its surface to the box's nearest corner;
-      // it closes at −V·n, so a box moving along or away from the surface never counts.
-      const RigidBodySettings& f = rigid_bodies_[k];
-      const Vec3 n = f.plane_normal.normalized();
-      const Real closing = -d.velocity.dot(n);
-      if (!(closing > 0)) continue;
-      Real gap = std::numeric_limits<Real>::infinity();
-      for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 cd((corner & 1) ? d.hi[0] : d.lo[0], (corner & 2) ? d.hi[1] : d.lo[1], (corner & 4) ? d.hi[2] : d.lo[2]);
-        gap = std::min(gap, (cd - f.plane_point).dot(n));
-      }
-      const Real start_gap = gap + closing * diagnostics_.time;
-      if (start_gap >= 0 && gap <= 0) fail(d.name, f.name, gap);
-    }
-  }
-}
-
 void Simulation::add_rigid_body(const RigidBodySettings& body) {
   const std::string where = "rigid_bodies." + body.name;
   if (diagnostics_.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
@@ -266,11 +174,31 @@ void Simulation::add_rigid_body(const RigidBodySettings& body) {
   RigidBodyState state;
   state.velocity = body.velocity;
   initial_rigid_energy_ += rigid_kinetic_energy(body, state);
-  rigid_states_.push_back(state);
-  diagnostics_.rigid = rigid_states_;
+  RigidBoundary rigid{rigid_bodies_.size() - 1, body, state};
+  if (body.coupling == RigidCoupling::penalty)
+    boundaries_.push_back(PenaltyBoundary{rigid});
+  else
+    boundaries_.push_back(rigid);
+  refresh_rigid_states();
   diagnostics_.rigid_energy = initial_rigid_energy_;
   impl_->refresh_needed = true;  // its speed enters the stable time step
   if (body.coupling == RigidCoupling::penalty) impl_->enable_penalty_contact();
+}
+
+void Simulation::refresh_rigid_states() {
+  diagnostics_.rigid.clear();
+  for (const auto& b : boundaries_)
+    if (const RigidBoundary* r = as_rigid(b)) diagnostics_.rigid.push_back(r->state);
+}
+
+std::vector<BoundaryReport> Simulation::boundary_reports() const {
+  std::vector<BoundaryReport> out;
+  for (const auto& b : boundaries_) {
+    out.push_back(std::visit([](const auto& boundary) { return boundary.report(); }, b));
+    if (const RigidBoundary* r = as_rigid(b))
+      out.back().potential_energy = rigid_potential_energy(r->settings, r->state, settings_.gravity);
+  }
+  return out;
 }
 
 const std::vector<Vec3>& Simulation::contact_forces() const { return impl_->contact.force; }
@@ -331,66 +259,39 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.time += dt;
   d.dt = dt;
   d.stable_dt = stable;
-  Real power = im.sums.gravity_power, constraint_power = 0;
-  for (size_t b = 0; b < bodies_.size(); ++b) {
-    switch (bodies_[b].role) {
-      case BodyRole::deformable:
-        d.body_displacement[b] = im.centre_of_mass(b) - im.initial_centre[b];
-        d.reaction[b] = im.reactions.force[b];  // of its held points' nodes; zero when none
-        break;
-      case BodyRole::fixed:
-        d.reaction[b] = im.reactions.force[b];
-        break;
-      case BodyRole::driven:
-        d.body_displacement[b] += dt * bodies_[b].velocity;
-        d.reaction[b] = im.reactions.force[b];
-        power += im.reactions.power[b];
-        constraint_power += im.reactions.power[b];
-        break;
-    }
-  }
-  // Geometric rigid bodies: their reactions of this step at V^n, then they move (rigid_body.hpp).
-  Real rigid_energy = 0, rigid_speed = 0;
-  // A penalty body's power on the model is that of its contact forces at the points'
-  // velocities, the mean of the step's start and end (rigid_contact.hpp): the energy its
-  // springs give back counts as work put in, and their stretch and the friction's loss stay
-  // outside the model's balance.
+  for (size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].role == BodyRole::deformable) d.body_displacement[b] = im.centre_of_mass(b) - im.initial_centre[b];
+  // The boundaries' work, motion and energy (boundary.hpp), in their order.
+  BoundaryLedger ledger;
+  ledger.external_power = im.sums.gravity_power;
+  ledger.prescribed_work = driven_rigid_work_;
   std::vector<Real> contact_power_end;
   if (im.penalty_contact) contact_power_end = contact_power(particles_, im.contact);
-  for (size_t k = 0; k < rigid_bodies_.size(); ++k) {
-    const Vec3 r = k < im.rigid_reactions.size() ? im.rigid_reactions[k] : Vec3::Zero();
-    const bool penalty = im.penalty_contact && rigid_bodies_[k].coupling == RigidCoupling::penalty &&
-                         k < im.contact.power.size();
-    const Real rigid_power = penalty ? Real(0.5) * (im.contact.power[k] + contact_power_end[k])
-                                     : r.dot(rigid_states_[k].velocity);
-    power += rigid_power;
-    // Bodies of prescribed motion are boundary conditions: their work enters the balance (a
-    // fixed no-slip body's is zero; a fixed penalty body's is its springs' work on the points).
-    if (rigid_bodies_[k].motion != RigidMotion::free) driven_rigid_work_ += dt * rigid_power;
-    advance_rigid_body(rigid_bodies_[k], rigid_states_[k], r, settings_.gravity, dt);
-    rigid_energy += rigid_kinetic_energy(rigid_bodies_[k], rigid_states_[k]) +
-                    rigid_potential_energy(rigid_bodies_[k], rigid_states_[k], settings_.gravity);
-    rigid_speed = std::max(rigid_speed, rigid_states_[k].velocity.norm());
+  BoundaryPass pass = im.boundary_pass(dt);
+  pass.contact_power_end = &contact_power_end;
+  for (auto& b : boundaries_) {
+    std::visit([&](auto& boundary) { boundary.advance(pass, ledger); }, b);
+    if (const auto* point = std::get_if<PointBoundary>(&b)) {
+      d.reaction[point->body] = point->reaction;
+      if (point->role == BodyRole::driven) d.body_displacement[point->body] = point->displacement;
+    }
   }
-  d.rigid = rigid_states_;
-  d.rigid_energy = rigid_energy;
-  d.external_work += dt * power;
-  d.constraint_work += dt * constraint_power;
+  refresh_rigid_states();
+  driven_rigid_work_ = ledger.prescribed_work;
+  d.rigid_energy = ledger.energy;
+  d.external_work += dt * ledger.external_power;
+  d.constraint_work += dt * ledger.constraint_power;
   d.gravity_work += dt * im.sums.gravity_power;
   d.kinetic_energy = im.sums.kinetic;
   d.strain_energy = im.sums.strain;
   d.record_force = im.sums.record_volume > 0 ? record_area_ * im.sums.record_stress_volume / im.sums.record_volume : 0;
   d.max_speed = std::sqrt(im.sums.max_speed_sq);
 
-  Real driven_speed = 0;
-  for (const auto& b : im.body_info)
-    if (b.role == BodyRole::driven) driven_speed = std::max(driven_speed, b.velocity.norm());
-  im.max_speed = std::max({d.max_speed, driven_speed, rigid_speed});
+  im.max_speed = std::max(d.max_speed, ledger.max_speed);
   d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - im.initial_energy - initial_rigid_energy_ -
                    d.constraint_work - d.gravity_work - driven_rigid_work_;
   if (im.sums.max_wave_speed_sq > 0) im.max_wave_speed = std::sqrt(im.sums.max_wave_speed_sq);
 
-  check_bodies_apart();
   const Real budget = std::max(im.initial_energy + d.external_work, Real(0));
   if (d.kinetic_energy > settings_.runaway_energy_factor * budget + settings_.runaway_energy_floor) {
     std::ostringstream msg;

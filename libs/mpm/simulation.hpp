@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "mpm/body.hpp"
+#include "mpm/boundary.hpp"
 #include "mpm/diagnostics.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/rigid_body.hpp"
@@ -56,7 +57,13 @@ class Simulation {
   // first step. Throws InputError for invalid settings, a duplicate name or a started run.
   void add_rigid_body(const RigidBodySettings& body);
   const std::vector<RigidBodySettings>& rigid_bodies() const { return rigid_bodies_; }
-  const std::vector<RigidBodyState>& rigid_states() const { return rigid_states_; }
+  // The rigid bodies' states now (their boundaries', in rigid_bodies() order).
+  const std::vector<RigidBodyState>& rigid_states() const { return diagnostics_.rigid; }
+  // Every boundary of the model (boundary.hpp): point-defined ones in body order, then the
+  // geometric rigid bodies in the order they were added.
+  const std::vector<Boundary>& boundaries() const { return boundaries_; }
+  // What the series shows of each boundary, in boundaries() order.
+  std::vector<BoundaryReport> boundary_reports() const;
   // Per point, in particles() order: the penalty contact force of the last step (N,
   // rigid_contact.hpp; zero for points not in contact). Empty without penalty bodies.
   const std::vector<Vec3>& contact_forces() const;
@@ -124,9 +131,6 @@ class Simulation {
   struct Impl;
   void advance(Real dt);
   void check_body_speed(Real speed, const std::string& where, const std::string& field) const;
-  void check_bodies_apart() const;
-  std::vector<Vec3> body_lo_, body_hi_, body_pad_;  // point bodies' boxes of points at the start, and
-                                                   // their points' largest half-size, m
   void finish_step(Real dt, Real stable_dt);
   std::unique_ptr<Impl> impl_;
   Particles particles_;
@@ -135,8 +139,9 @@ class Simulation {
   StepDiagnostics diagnostics_;
   std::vector<Observer> observers_;
   Real record_area_ = 0;
-  std::vector<RigidBodySettings> rigid_bodies_;
-  std::vector<RigidBodyState> rigid_states_;
+  std::vector<RigidBodySettings> rigid_bodies_;  // as added (their state: in boundaries_)
+  std::vector<Boundary> boundaries_;
+  void refresh_rigid_states();  // diagnostics_.rigid from the boundaries
   Real initial_rigid_energy_ = 0;  // J, Σ kinetic + potential of free rigid bodies at the start
   Real driven_rigid_work_ = 0;     // J, work of driven and fixed rigid bodies on the model so far
 };

@@ -14,6 +14,7 @@
 
 #include "core/errors.hpp"
 #include "mpm/ddmp_grid.hpp"
+#include "mpm/domain.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/particle_buckets.hpp"
 #include "mpm/rigid_contact.hpp"
@@ -41,6 +42,7 @@ struct Simulation::Impl {
   ParticleBuckets buckets;
   std::vector<BlockTable> tables;
   SparseGrid grid;
+  Domain domain;  // other processes' parts (domain.hpp): nothing to do for one
   tbb::task_arena arena;
   tbb::enumerable_thread_specific<BucketBuffer> buffers;
   std::vector<BucketTally> tallies;
@@ -56,7 +58,6 @@ struct Simulation::Impl {
   Reactions reactions;
   std::vector<Real> occupancy;  // DDMP: deformable volume per cell (cell_occupancy.hpp)
   DdmpNodalValues ddmp_nodal;   // DDMP on the grid: σ^d and L per node (ddmp_grid.hpp)
-  std::vector<Vec3> rigid_reactions;  // per geometric rigid body, N (rigid_body.hpp)
   // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
   bool penalty_contact = false;
   std::vector<ContactMaterial> contact_materials;  // per point body
@@ -105,6 +106,7 @@ struct Simulation::Impl {
   template <class Shape>
   void prepare_grid() {
     if (needs_sort) {
+      domain.migrate_particles(particles());
       buckets.sort(particles(), settings().cell_size);
       compute_boxes_from_positions();
       needs_sort = false;
@@ -188,6 +190,7 @@ struct Simulation::Impl {
         }
       });
     }
+    domain.exchange_halo(grid);
     if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
       ddmp_nodal_stress(grid, settings().cell_size, ddmp_nodal);
       add_ddmp_smoothed_force(grid, ddmp_nodal);
@@ -224,7 +227,7 @@ struct Simulation::Impl {
     scatter<Shape, ScatterAll>();
     add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
-    couple_rigid(dt);
+    constrain_boundaries(dt);
     gather<Shape, GatherAll>(dt);
   }
 
@@ -234,13 +237,13 @@ struct Simulation::Impl {
     scatter<Shape, ScatterAll>();
     add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
-    couple_rigid(dt);
+    constrain_boundaries(dt);
     gather<Shape, GatherVelocity>(dt);
     // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterRemap>();
     grid_velocity_from_momentum(grid, lane::force, lane::force, body_info);
-    impose_rigid_velocities(grid, settings().cell_size, lane::force, sim.rigid_bodies_, sim.rigid_states_);
+    impose_boundaries(lane::force);
     gather<Shape, GatherStrainAndPosition>(dt);
   }
 
@@ -250,22 +253,30 @@ struct Simulation::Impl {
     scatter<Shape, ScatterMomentum>();
     // Stress first, from the velocity at the start of the step (lanes 4–6).
     grid_velocity_from_momentum(grid, lane::momentum, lane::force, body_info);
-    impose_rigid_velocities(grid, settings().cell_size, lane::force, sim.rigid_bodies_, sim.rigid_states_);
+    impose_boundaries(lane::force);
     gather<Shape, GatherStrain>(dt);
     clear_grid_lanes(grid, lane::force, 3);
     scatter<Shape, ScatterForce>();
     add_contact_forces<Shape>();
     reactions = update_grid_velocities(grid, dt, settings().gravity, body_info);
-    couple_rigid(dt);
+    constrain_boundaries(dt);
     gather<Shape, GatherMotion>(dt);
   }
 
-  // Geometric rigid bodies take their nodes after the grid update (rigid_body.hpp); penalty
-  // bodies push with the sum of their points' contact forces instead.
-  void couple_rigid(Real dt) {
-    rigid_reactions = couple_rigid_bodies(grid, settings().cell_size, dt, sim.rigid_bodies_, sim.rigid_states_);
-    if (penalty_contact)
-      for (size_t k = 0; k < rigid_reactions.size(); ++k) rigid_reactions[k] += contact.reaction[k];
+  // --- Boundaries (boundary.hpp) ----------------------------------------------------------
+
+  BoundaryPass boundary_pass(Real dt) {
+    return {grid, settings().cell_size, dt, settings().gravity, &reactions, penalty_contact ? &contact : nullptr};
+  }
+  // After the node update: every boundary constrains its nodes and keeps its reaction.
+  void constrain_boundaries(Real dt) {
+    BoundaryPass pass = boundary_pass(dt);
+    for (auto& b : sim.boundaries_) std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
+  }
+  // The boundaries' velocities on the field in lanes [lane, lane + 3), without reactions.
+  void impose_boundaries(int lane) {
+    BoundaryPass pass = boundary_pass(0);
+    for (auto& b : sim.boundaries_) std::visit([&](auto& boundary) { boundary.impose(pass, lane); }, b);
   }
 
   // --- Penalty contact (rigid_contact.hpp) ----------------------------------------------
@@ -291,7 +302,7 @@ struct Simulation::Impl {
   template <class Shape>
   void add_contact_forces() {
     if (!penalty_contact) return;
-    update_penalty_contacts(particles(), contact_materials, sim.rigid_bodies_, sim.rigid_states_, contact);
+    update_penalty_contacts(particles(), contact_materials, sim.rigid_bodies_, sim.diagnostics_.rigid, contact);
     using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
     constexpr int N = Weights::nodes_per_axis;
     const Real h = settings().cell_size;
@@ -331,18 +342,18 @@ struct Simulation::Impl {
       s.max_wave_speed_sq = std::max(s.max_wave_speed_sq, t.max_wave_speed_sq);
     }
     if (velocity) {
-      sums.kinetic = s.kinetic;
-      sums.max_speed_sq = s.max_speed_sq;
+      sums.kinetic = domain.reduce_sum(s.kinetic);
+      sums.max_speed_sq = domain.reduce_max(s.max_speed_sq);
     }
     if (position) {
-      sums.gravity_power = s.gravity_power;
+      sums.gravity_power = domain.reduce_sum(s.gravity_power);
       take_cell_ranges();
     }
     if (gradient) {
-      sums.strain = s.strain;
-      sums.record_stress_volume = s.record_stress_volume;
-      sums.record_volume = s.record_volume;
-      sums.max_wave_speed_sq = s.max_wave_speed_sq;
+      sums.strain = domain.reduce_sum(s.strain);
+      sums.record_stress_volume = domain.reduce_sum(s.record_stress_volume);
+      sums.record_volume = domain.reduce_sum(s.record_volume);
+      sums.max_wave_speed_sq = domain.reduce_max(s.max_wave_speed_sq);
     }
   }
 
@@ -403,7 +414,7 @@ struct Simulation::Impl {
       else
         max_speed = std::max(max_speed, body_info[b].velocity.norm());
     }
-    for (const auto& r : sim.rigid_states_) max_speed = std::max(max_speed, r.velocity.norm());
+    for (const auto& r : sim.diagnostics_.rigid) max_speed = std::max(max_speed, r.velocity.norm());
     std::vector<Vec3> mx(nb, Vec3::Zero());
     std::vector<Real> mass(nb, 0);
     for (size_t p = 0; p < ps.size(); ++p) {

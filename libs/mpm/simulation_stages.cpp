@@ -22,7 +22,7 @@ void Simulation::stage_grid_update(Real dt) {
   im.arena.execute([&] {
     im.with_solver_shape([&](auto shape) { im.add_contact_forces<decltype(shape)>(); });
     im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
-    im.couple_rigid(dt);
+    im.constrain_boundaries(dt);
   });
   im.grid_holds_velocity = true;
 }

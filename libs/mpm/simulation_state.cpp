@@ -77,16 +77,11 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
   solver.rows("reaction", d.reaction);
   solver.rows("initial_centre", im.initial_centre);
 
-  CheckpointWriter rigid = out.sub("rigid");
-  std::vector<Vec3> displacement, velocity, reaction;
-  std::vector<Real> work;
-  for (const auto& r : rigid_states_)
-    displacement.push_back(r.displacement), velocity.push_back(r.velocity), reaction.push_back(r.reaction),
-        work.push_back(r.work);
-  rigid.rows("displacement", displacement);
-  rigid.rows("velocity", velocity);
-  rigid.rows("reaction", reaction);
-  rigid.rows("work", work);
+  CheckpointWriter boundaries = out.sub("boundaries");
+  for (const auto& b : boundaries_) {
+    CheckpointWriter own = boundaries.sub(checkpoint_name(b));
+    std::visit([&](const auto& boundary) { boundary.save(own); }, b);
+  }
 }
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {
@@ -139,12 +134,12 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   d.reaction = solver.rows<Vec3>("reaction", nb);
   auto initial_centre = solver.rows<Vec3>("initial_centre", nb);
 
-  const CheckpointReader rigid = in.sub("rigid");
-  const size_t nr = rigid_bodies_.size();
-  const auto disp = rigid.rows<Vec3>("displacement", nr);
-  const auto vel = rigid.rows<Vec3>("velocity", nr);
-  const auto reac = rigid.rows<Vec3>("reaction", nr);
-  const auto work = rigid.rows<Real>("work", nr);
+  const CheckpointReader boundaries_in = in.sub("boundaries");
+  std::vector<Boundary> boundaries = boundaries_;
+  for (auto& b : boundaries) {
+    const CheckpointReader own = boundaries_in.sub(checkpoint_name(b));
+    std::visit([&](auto& boundary) { boundary.load(own); }, b);
+  }
 
   particles_ = std::move(p);
   im.buckets.restore(std::move(buckets), std::move(runs));
@@ -154,9 +149,9 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   im.initial_centre = std::move(initial_centre);
   im.refresh_needed = false;
   initial_rigid_energy_ = initial_rigid_energy, driven_rigid_work_ = driven_rigid_work;
-  for (size_t k = 0; k < nr; ++k) rigid_states_[k] = {disp[k], vel[k], reac[k], work[k]};
-  d.rigid = rigid_states_;
+  boundaries_ = std::move(boundaries);
   diagnostics_ = std::move(d);
+  refresh_rigid_states();
 }
 
 }  // namespace latmpm::mpm

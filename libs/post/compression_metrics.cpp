@@ -13,16 +13,40 @@ namespace {
 
 std::string mm(double metres) { return format_millimetres(metres, 3); }
 
-// The first local maximum followed by a relative drop of at least `drop` before the curve
-// climbs above it again; returns the index or -1.
-long first_peak(const Curve& c, double drop) {
-  for (size_t k = 1; k + 1 < c.size(); ++k) {
+// The first local maximum after index `from` followed by a relative drop of at least `drop`
+// before the curve climbs above it again, and not climbed above again within `persist` of
+// travel (ringing, not a failing structure); returns the index or -1.
+long first_peak(const Curve& c, double drop, size_t from = 0, double persist = 0) {
+  for (size_t k = from + 1; k + 1 < c.size(); ++k) {
     if (!(c.y[k] >= c.y[k - 1] && c.y[k] > c.y[k + 1]) || c.y[k] <= 0) continue;
     double lowest = c.y[k];
-    for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k]; ++j) lowest = std::min(lowest, c.y[j]);
-    if (lowest <= (1 - drop) * c.y[k]) return long(k);
+    size_t j = k + 1;
+    for (; j < c.size() && c.y[j] <= c.y[k]; ++j) lowest = std::min(lowest, c.y[j]);
+    if (lowest > (1 - drop) * c.y[k]) continue;
+    if (j < c.size() && c.x[j] - c.x[k] <= persist) continue;
+    return long(k);
   }
   return -1;
+}
+
+// The start-up transient on the binned curve: a first peak within `window` of the start is
+// a spike of the platen set moving at once (the quasi-static response cannot peak that
+// early); it ends at the lowest load after the spike, searched until the curve climbs above
+// the spike again or two windows on. The ringing repeats: spike after spike within the window
+// belongs to the transient. Returns the index where it ends, or 0 when there is no spike.
+size_t transient_end(const Curve& c, double drop, double window) {
+  if (!(window > 0)) return 0;
+  size_t settled = 0;
+  for (;;) {
+    const long spike = first_peak(c, drop, settled);
+    if (spike < 0 || c.x[size_t(spike)] - c.x.front() > window) return settled;
+    const size_t k = size_t(spike);
+    size_t lowest = k;
+    for (size_t j = k + 1; j < c.size() && c.y[j] <= c.y[k] && c.x[j] - c.x.front() <= 2 * window; ++j)
+      if (c.y[j] < c.y[lowest]) lowest = j;
+    if (lowest == k) return settled;
+    settled = lowest;
+  }
 }
 
 }  // namespace
@@ -50,8 +74,27 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
   m.final_displacement = travel;
   const bool have_gauge = std::isfinite(gauge) && gauge > 0;
 
-  // Peak load over the series rows as written.
-  const size_t peak = argmax(curve.y);
+  // The binned curve: solver oscillation averaged out, evenly spaced in u.
+  double bin = s.bin;
+  if (!(bin > 0)) bin = have_gauge ? 1e-3 * gauge : travel / 500;
+  bin = std::min(bin, (travel - curve.x.front()) / 10);
+  const Curve binned = bin_average(curve, curve.x.front(), travel, bin);
+
+  // The start-up transient, excluded from everything but the energy.
+  const double window = std::isfinite(s.transient_window) ? s.transient_window
+                        : have_gauge                      ? 0.01 * gauge
+                                                          : 0.1 * travel;
+  const size_t settled = transient_end(binned, s.first_peak_drop, window);
+  if (settled > 0) {
+    m.transient_end = binned.x[settled];
+    m.notes.push_back("start-up transient: a load spike before " + mm(m.transient_end) +
+                      " is left out of the peaks, the stiffness fit and the densification onset");
+  }
+
+  // Peak load over the series rows as written, after the transient.
+  size_t peak = 0;
+  for (size_t i = 0; i < curve.size(); ++i)
+    if (curve.x[i] >= m.transient_end && (curve.x[peak] < m.transient_end || curve.y[i] > curve.y[peak])) peak = i;
   m.peak_load = curve.y[peak];
   m.peak_displacement = curve.x[peak];
   for (size_t i = 0; i < h.displacement.size(); ++i)
@@ -60,13 +103,7 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
       break;
     }
 
-  // The binned curve: solver oscillation averaged out, evenly spaced in u.
-  double bin = s.bin;
-  if (!(bin > 0)) bin = have_gauge ? 1e-3 * gauge : travel / 500;
-  bin = std::min(bin, (travel - curve.x.front()) / 10);
-  const Curve binned = bin_average(curve, curve.x.front(), travel, bin);
-
-  const long fp = first_peak(binned, s.first_peak_drop);
+  const long fp = first_peak(binned, s.first_peak_drop, settled, window);
   if (fp >= 0) {
     m.first_peak_load = binned.y[size_t(fp)];
     m.first_peak_displacement = binned.x[size_t(fp)];
@@ -76,11 +113,11 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
   }
 
   // Initial stiffness: linear least squares over the initial range.
-  m.fit_from = std::isfinite(s.fit_from) ? s.fit_from : curve.x.front();
+  m.fit_from = std::isfinite(s.fit_from) ? s.fit_from : settled > 0 ? m.transient_end : curve.x.front();
   m.fit_to = std::isfinite(s.fit_to) ? s.fit_to
-             : fp >= 0              ? 0.5 * m.first_peak_displacement
-             : have_gauge           ? std::min(0.02 * gauge, travel)
-                                    : 0.1 * travel;
+             : fp >= 0              ? 0.5 * (m.fit_from + m.first_peak_displacement)
+             : have_gauge           ? std::min(m.fit_from + 0.02 * gauge, travel)
+                                    : m.fit_from + 0.1 * travel;
   m.stiffness = fitted_slope(curve, m.fit_from, m.fit_to);
   if (std::isnan(m.stiffness))
     m.notes.push_back("initial stiffness: fewer than two rows in the fit range " + mm(m.fit_from) + " to " + mm(m.fit_to));
@@ -104,15 +141,22 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
   // Densification onset: maximum of the energy efficiency on the binned curve, over points
   // whose load is at least 10 % of the largest load so far (deep troughs after a collapse
   // make W/F spike without meaning).
-  const std::vector<double> eta = efficiency_length(binned.x, binned.y);
+  // The work counts from the end of the transient: the spike's work over the low load
+  // after it would make W/F peak there.
+  const std::vector<double> settled_x(binned.x.begin() + long(settled), binned.x.end());
+  std::vector<double> eta(settled, std::nan(""));
+  const std::vector<double> settled_eta =
+      efficiency_length(settled_x, std::vector<double>(binned.y.begin() + long(settled), binned.y.end()));
+  eta.insert(eta.end(), settled_eta.begin(), settled_eta.end());
   long best = -1;
   double highest = 0;
-  for (size_t i = 0; i < eta.size(); ++i) {
+  for (size_t i = settled; i < eta.size(); ++i) {
     highest = std::max(highest, binned.y[i]);
     if (std::isfinite(eta[i]) && binned.y[i] >= 0.1 * highest && (best < 0 || eta[i] > eta[size_t(best)]))
       best = long(i);
   }
-  if (best < 0 || size_t(best) + 1 >= eta.size()) {
+  // A maximum within the last transient window is the end of the run, not an onset.
+  if (best < 0 || size_t(best) + 1 >= eta.size() || binned.x.back() - binned.x[size_t(best)] < window) {
     m.notes.push_back("densification onset: not reached (the energy efficiency still rises at the end of the run)");
   } else {
     m.densification_displacement = binned.x[size_t(best)];

@@ -43,6 +43,10 @@ std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
     s.material.young_modulus = m->youngs_modulus;
     s.material.poisson_ratio = m->poisson_ratio;
     s.material.density = m->density;
+    s.material.initial_yield = m->initial_yield;
+    s.material.saturation_yield = m->saturation_yield;
+    s.material.saturation_rate = m->saturation_rate;
+    s.material.linear_hardening = m->linear_hardening;
     s.velocity = b.velocity;
     s.hold_tag = b.hold_tag;
     s.hold_slip = b.hold_slip;

@@ -19,6 +19,7 @@
 #include "run_output/scene_simulation.hpp"
 #include "run_output/snapshot_writer.hpp"
 #include "run_output/solver_series.hpp"
+#include "scene/driven_body_reach.hpp"
 #include "scene/scene_points.hpp"
 
 namespace fs = std::filesystem;
@@ -57,6 +58,7 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
          << scene_.cell_size * 1e3 << " mm";
     points_summary_ += note.str() + "\n";
   }
+  for (const std::string& warning : driven_body_warnings(scene_, points)) points_summary_ += warning + "\n";
   std::vector<size_t> count(points.body_names.size(), 0);
   for (int32_t b : points.body) ++count[b];
   for (size_t b = 0; b < count.size(); ++b)

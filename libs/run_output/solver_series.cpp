@@ -37,45 +37,34 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
 }
 
 bool has_flyer(const mpm::Simulation& sim) {
-  for (const auto& r : sim.rigid_bodies())
-    if (r.motion == mpm::RigidMotion::free) return true;
+  for (const auto& r : sim.boundary_reports())
+    if (r.role == mpm::BoundaryRole::free) return true;
   return false;
 }
 
 std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
                                       const Eigen::Vector3d& axis) {
-  double displacement = 0, load_driven = 0, load_fixed = 0;
-  const auto& bodies = sim.bodies();
+  // One pass over the boundaries (point-defined ones first, then the rigid bodies): driven
+  // ones load the specimen and the first gives the displacement, fixed ones and held points
+  // hold it up, free ones are flyers.
+  double displacement = 0, load_driven = 0, load_fixed = 0, load_flyer = 0;
   bool displacement_taken = false;
-  for (size_t b = 0; b < bodies.size(); ++b) {
-    const bool have = b < d.reaction.size();
-    const Eigen::Vector3d reaction = have ? Eigen::Vector3d(d.reaction[b]) : Eigen::Vector3d::Zero();
-    if (bodies[b].role == mpm::BodyRole::driven) {
-      load_driven += reaction.dot(axis);
-      if (!displacement_taken && b < d.body_displacement.size())
-        displacement = Eigen::Vector3d(d.body_displacement[b]).dot(axis);
-      displacement_taken = true;
-    } else if (bodies[b].role == mpm::BodyRole::fixed || !bodies[b].hold_tag.empty()) {
-      load_fixed = load_fixed - reaction.dot(axis);
-    }
-  }
-  // Geometric rigid bodies: driven plates like driven point bodies, fixed ones like fixed
-  // point bodies (the base's reaction against the axis); free ones are flyers.
-  const auto& rigid = sim.rigid_bodies();
-  double load_flyer = 0;
-  const mpm::RigidBodyState* flyer = nullptr;
-  const mpm::RigidBodySettings* flyer_settings = nullptr;
-  for (size_t k = 0; k < rigid.size() && k < d.rigid.size(); ++k) {
-    const double along = Eigen::Vector3d(d.rigid[k].reaction).dot(axis);
-    if (rigid[k].motion == mpm::RigidMotion::driven) {
-      load_driven += along;
-      if (!displacement_taken) displacement = Eigen::Vector3d(d.rigid[k].displacement).dot(axis);
-      displacement_taken = true;
-    } else if (rigid[k].motion == mpm::RigidMotion::fixed) {
-      load_fixed = load_fixed - along;
-    } else {
-      load_flyer += along;
-      if (!flyer) flyer = &d.rigid[k], flyer_settings = &rigid[k];
+  const mpm::BoundaryReport* flyer = nullptr;
+  const auto reports = sim.boundary_reports();
+  for (const auto& r : reports) {
+    const double along = Eigen::Vector3d(r.reaction).dot(axis);
+    switch (r.role) {
+      case mpm::BoundaryRole::driven:
+        load_driven += along;
+        if (!displacement_taken) displacement = Eigen::Vector3d(r.displacement).dot(axis);
+        displacement_taken = true;
+        break;
+      case mpm::BoundaryRole::fixed:
+      case mpm::BoundaryRole::held: load_fixed = load_fixed - along; break;
+      case mpm::BoundaryRole::free:
+        load_flyer += along;
+        if (!flyer) flyer = &r;
+        break;
     }
   }
   std::vector<double> row = {double(d.step),   d.time,           d.dt,
@@ -83,13 +72,10 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
                              0.0 - d.record_force,  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
                              d.external_work,  d.max_speed,      d.constraint_work,
                              d.gravity_work,   d.energy_error};
-  if (flyer) {
-    const Eigen::Vector3d g = sim.settings().gravity;
+  if (flyer)
     row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
-                           0.0 + Eigen::Vector3d(flyer->displacement).dot(axis),
-                           mpm::rigid_kinetic_energy(*flyer_settings, *flyer),
-                           0.0 + mpm::rigid_potential_energy(*flyer_settings, *flyer, g)});
-  }
+                           0.0 + Eigen::Vector3d(flyer->displacement).dot(axis), flyer->kinetic_energy,
+                           0.0 + flyer->potential_energy});
   return row;
 }
 

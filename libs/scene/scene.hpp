@@ -14,7 +14,7 @@ namespace latmpm {
 enum class BodyRole { deformable, fixed, driven };
 enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp };
 enum class SchemeKind { usl, usf, musl };
-enum class MaterialModel { linear_elastic, neo_hookean };
+enum class MaterialModel { linear_elastic, neo_hookean, j2 };
 
 const char* to_string(BodyRole role);
 const char* to_string(ShapeKind shape);
@@ -56,6 +56,11 @@ struct MaterialSpec {
   double youngs_modulus = 0;  // Pa
   double poisson_ratio = 0;
   double density = 0;  // kg/m³ as given; mass scaling is applied by the solver set-up
+  // model = "j2" (paper B Eq. 10): y0, y_inf (default y0), eta (default 0), h (default 0).
+  double initial_yield = 0;     // Pa
+  double saturation_yield = 0;  // Pa
+  double saturation_rate = 0;   // dimensionless
+  double linear_hardening = 0;  // Pa
 };
 
 struct BodySpec {

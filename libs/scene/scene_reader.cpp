@@ -33,7 +33,7 @@ constexpr BodyRole all_roles[] = {BodyRole::deformable, BodyRole::fixed, BodyRol
 constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKind::cpgimp,
                                     ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp};
 constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
-constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean};
+constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean, MaterialModel::j2};
 const std::vector<std::string> rigid_motions = {"driven", "free", "fixed"};
 const std::vector<std::string> rigid_shapes = {"box", "half_space"};
 const std::vector<std::string> rigid_contacts = {"no_slip", "penalty"};
@@ -120,6 +120,16 @@ MaterialSpec read_material(TableReader m) {
   if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5)) m.fail("nu", "must lie in (-1, 0.5)");
   spec.density = m.quantity("density", dimension::density);
   if (!(spec.density > 0)) m.fail("density", "must be positive");
+  if (spec.model == MaterialModel::j2) {  // paper B Eq. 10; the other models refuse these keys
+    spec.initial_yield = m.quantity("y0", dimension::pressure);
+    if (!(spec.initial_yield > 0)) m.fail("y0", "must be positive");
+    spec.saturation_yield = m.has("y_inf") ? m.quantity("y_inf", dimension::pressure) : spec.initial_yield;
+    if (!(spec.saturation_yield > 0)) m.fail("y_inf", "must be positive");
+    spec.saturation_rate = m.number("eta", 0);
+    if (!(spec.saturation_rate >= 0)) m.fail("eta", "must be zero or positive");
+    spec.linear_hardening = m.quantity("h", dimension::pressure, "0Pa");
+    if (!(spec.linear_hardening >= 0)) m.fail("h", "must be zero or positive");
+  }
   m.finish();
   return spec;
 }
@@ -328,6 +338,7 @@ const char* to_string(MaterialModel model) {
   switch (model) {
     case MaterialModel::linear_elastic: return "linear_elastic";
     case MaterialModel::neo_hookean: return "neo_hookean";
+    case MaterialModel::j2: return "j2";
   }
   return "?";
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "levelset/level_set_units.hpp"
 #include "voxelize/sub_cell_fraction.hpp"
 
 namespace latmpm {
@@ -87,8 +88,8 @@ double uniform_voxel_size(const openvdb::FloatGrid& grid) {
   if (!uniform || !(v > 0))
     throw InputError("voxelize", "level set",
                      "transform is not a uniform scale about the origin (voxel " + std::to_string(v) +
-                         " m, origin at index " + std::to_string(xform.worldToIndex(openvdb::Vec3d(0.0))[0]) + ")");
-  return v;
+                         " mm, origin at index " + std::to_string(xform.worldToIndex(openvdb::Vec3d(0.0))[0]) + ")");
+  return v / grid_units_per_metre;
 }
 
 }  // namespace
@@ -101,7 +102,7 @@ PointSet sample_level_set(const openvdb::FloatGrid& level_set, const SamplingOpt
   const double h = options.cell_size;
   const double spacing = h / options.ppc;  // Δ
   const double voxel = uniform_voxel_size(level_set);
-  const double background = level_set.background();
+  const double background = level_set.background() / grid_units_per_metre;  // m
   // Band points read φ up to one voxel beyond ±Δ/2 for the curvature, and the quick
   // inside/outside test below trusts values up to Δ/2 + √3 voxels: clipped values there
   // would corrupt both.
@@ -136,8 +137,9 @@ PointSet sample_level_set(const openvdb::FloatGrid& level_set, const SamplingOpt
   const double inv_voxel = 1.0 / voxel;
   auto sample_slab = [&](int64_t mz) {
     auto accessor = level_set.getConstAccessor();
+    // φ in metres (the grid holds grid units, level_set_units.hpp).
     auto phi_at = [&](const openvdb::Vec3d& index) {
-      return static_cast<double>(openvdb::tools::BoxSampler::sample(accessor, index));
+      return static_cast<double>(openvdb::tools::BoxSampler::sample(accessor, index)) / grid_units_per_metre;
     };
     std::vector<Sampled>& out = per_slab[static_cast<size_t>(mz - lo[2])];
     const double z = (mz + 0.5) * spacing;
@@ -146,7 +148,7 @@ PointSet sample_level_set(const openvdb::FloatGrid& level_set, const SamplingOpt
       for (int64_t mx = lo[0]; mx <= hi[0]; ++mx) {
         const double x = (mx + 0.5) * spacing;
         const openvdb::Vec3d index(x * inv_voxel, y * inv_voxel, z * inv_voxel);
-        const double nearest = accessor.getValue(openvdb::Coord::round(index));
+        const double nearest = accessor.getValue(openvdb::Coord::round(index)) / grid_units_per_metre;
         if (nearest >= margin) continue;
         double fraction = 1.0;
         double phi = nearest;

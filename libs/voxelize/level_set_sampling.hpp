@@ -23,7 +23,8 @@ struct SamplingOptions {
   bool curvature_correction = true;  // see sub_cell_fraction.hpp; off only to measure it
 };
 
-// `level_set`: narrow-band signed distance in world units (m), negative inside, with the
+// `level_set`: narrow-band signed distance in grid units (mm, levelset/level_set_units.hpp),
+// negative inside, with the
 // interior resolved (inactive values inside are −background), a uniform voxel no coarser than
 // Δ/2 recommended, band half-width ≥ Δ/2 + √3 voxels. The level set's transform must be a pure
 // uniform scale. Returns positions, volumes, half sizes; body ids all 0 and `body_names`

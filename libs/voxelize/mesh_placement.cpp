@@ -1,5 +1,6 @@
 #include "voxelize/mesh_placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -19,7 +20,7 @@ Eigen::Affine3d Placement::transform() const {
 }
 
 bool Placement::is_identity() const {
-  return scale == 1.0 && rotations.empty() && translation.isZero(0.0);
+  return scale == 1.0 && rotations.empty() && !place && translation.isZero(0.0) && std::isnan(stand_on_z);
 }
 
 AxisRotation parse_axis_rotation(const std::string& text, const std::string& where) {
@@ -49,8 +50,22 @@ void place_mesh(TriangleMesh& mesh, const Placement& placement) {
   if (!(placement.scale > 0) || !std::isfinite(placement.scale))
     throw InputError("--scale", "", "must be a positive factor");
   if (placement.is_identity()) return;
-  const Eigen::Affine3d t = placement.transform();
+  Placement before_translation = placement;
+  before_translation.translation.setZero();
+  const Eigen::Affine3d t = before_translation.transform();
   for (auto& v : mesh.vertices) v = t * v;
+  Eigen::Vector3d shift = placement.translation;
+  if (placement.place && !mesh.vertices.empty()) {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : mesh.vertices) box.extend(v);
+    shift -= Eigen::Vector3d(box.center().x(), box.center().y(), box.min().z());
+  }
+  for (auto& v : mesh.vertices) v += shift;
+  if (!std::isnan(placement.stand_on_z) && !mesh.vertices.empty()) {
+    double lowest = INFINITY;
+    for (const auto& v : mesh.vertices) lowest = std::min(lowest, v.z());
+    for (auto& v : mesh.vertices) v.z() += placement.stand_on_z - lowest;
+  }
 }
 
 }  // namespace latmpm

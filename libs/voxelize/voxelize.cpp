@@ -54,6 +54,10 @@ double VoxelizeOptions::band_half_width() const {
   return std::max(3.0, 0.5 * spacing() / resolved_voxel_size() + std::sqrt(3.0) + 0.05);
 }
 
+double VoxelizeOptions::interior_band_half_width() const {
+  return std::max(band_half_width(), cell_size / resolved_voxel_size() + 2.5);
+}
+
 Voxelized voxelize_strut_graph(const StrutGraph& graph, const VoxelizeOptions& options) {
   check_options(options);
   Voxelized out;
@@ -78,9 +82,10 @@ Voxelized voxelize_mesh(const TriangleMesh& mesh, const std::string& body_name,
   Voxelized out;
   const auto start = Clock::now();
   const auto level_set = mesh_level_set(mesh, options.resolved_voxel_size(), options.band_half_width(),
-                                        stage_progress(options, "level set"));
+                                        stage_progress(options, "level set"), options.interior_band_half_width());
   out.level_set_seconds = seconds_since(start);
   sample_into(out, *level_set, options);
+  out.thin = find_thin_features(*level_set, 2 * options.cell_size);
   out.solid_volume = std::fabs(signed_volume(mesh));
   out.points.body_names = {body_name};
   tag_regions(out.points, {});

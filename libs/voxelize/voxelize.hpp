@@ -10,6 +10,7 @@
 #include "geometry/strut_graph.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "points/point_set.hpp"
+#include "voxelize/thin_features.hpp"
 
 namespace latmpm {
 
@@ -25,6 +26,9 @@ struct VoxelizeOptions {
   double resolved_voxel_size() const { return voxel_size > 0 ? voxel_size : 0.5 * spacing(); }
   // Narrow-band half-width (voxels) the sampling needs: Δ/2 + √3 voxels, at least OpenVDB's 3.
   double band_half_width() const;
+  // Inside a mesh the band reaches one cell and 2.5 voxels deep, so that walls and struts
+  // thinner than two cells show as ridges of φ (thin_features.hpp).
+  double interior_band_half_width() const;
 };
 
 struct Voxelized {
@@ -33,6 +37,7 @@ struct Voxelized {
   double voxel_size = 0;    // m
   size_t active_voxels = 0;
   double dropped_volume = 0;  // m³ of features thinner than a point spacing (level_set_sampling.hpp)
+  ThinFeatures thin;          // meshes: walls and struts thinner than two cells
   double level_set_seconds = 0, sampling_seconds = 0;
 };
 

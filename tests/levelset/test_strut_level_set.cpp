@@ -9,6 +9,7 @@
 #include "levelset/solid_primitive.hpp"
 #include "levelset/strut_level_set.hpp"
 #include "levelset/level_set_mesh.hpp"
+#include "levelset/level_set_units.hpp"
 
 using namespace latmpm;
 
@@ -94,7 +95,7 @@ TEST_CASE("Every voxel of a strut union holds the clamped exact distance or the 
       for (int k = -40; k <= 30; ++k) {
         const Eigen::Vector3d p = h * Eigen::Vector3d(i, j, k);
         const double exact = union_distance(g, p);
-        const float value = accessor.getValue(openvdb::Coord(i, j, k));
+        const double value = accessor.getValue(openvdb::Coord(i, j, k)) / grid_units_per_metre;
         ++checked;
         if (std::abs(exact) < w - 1e-9) {
           if (std::abs(value - exact) > 1e-6 * w || !accessor.isValueOn(openvdb::Coord(i, j, k))) ++wrong;

@@ -120,6 +120,9 @@ TEST_CASE("Bad STL files give an InputError naming the file and the problem", "[
   std::memcpy(&nan_bin[84 + 50 * 5 + 12 + 4], &nan, 4);  // triangle 5, vertex 1, y
   std::string inf_txt = good_txt;
   inf_txt.replace(inf_txt.find("vertex ") + 7, 1, "inf");
+  std::string huge_txt = good_txt, beyond_float_txt = good_txt;
+  huge_txt.replace(huge_txt.find("vertex ") + 7, 1, "1e999");  // from_chars: out of range, value left 0
+  beyond_float_txt.replace(beyond_float_txt.find("vertex ") + 7, 1, "-1e39");
   std::string zero_bin(84, '\0');
   const Case c = GENERATE_COPY(
       Case{"empty", "", "empty file"},
@@ -127,6 +130,8 @@ TEST_CASE("Bad STL files give an InputError naming the file and the problem", "[
       Case{"truncated ASCII", good_txt.substr(0, good_txt.size() / 2), "line"},
       Case{"NaN in binary", nan_bin, "triangle 5"},
       Case{"Inf in ASCII", inf_txt, "triangle 0"},
+      Case{"1e999 in ASCII", huge_txt, "'1e999' is out of range"},
+      Case{"-1e39 in ASCII", beyond_float_txt, "beyond single precision"},
       Case{"no triangles", zero_bin, "no triangles"},
       Case{"too short", "abc", "too short"},
       Case{"ASCII garbage", "solid x\n facet normal 0 0 1\n outer loop\n vertex 1 2 x\n", "expected a number"});

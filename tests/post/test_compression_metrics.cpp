@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "post/compression_metrics.hpp"
@@ -146,4 +147,38 @@ TEST_CASE("The energy efficiency of a linear curve is half the travel", "[post]"
   const std::vector<double> eta = efficiency_length(u, f);
   CHECK(std::isnan(eta[0]));
   for (size_t i = 1; i < u.size(); ++i) CHECK(eta[i] == Approx(u[i] / 2));
+}
+
+TEST_CASE("A start-up spike is not taken for the first peak, the fit or the densification", "[post]") {
+  // The foam curve with the spike of a platen set moving at once: a triangle of 1.2 N over
+  // the first 0.12 mm (0.3 % strain), peaking at 0.06 mm; the quasi-static curve climbs past
+  // it at 0.66 mm.
+  static auto spiked = [](double u) { return Foam::load(u) + 1.2 * std::max(0.0, 1 - std::abs(u - 0.06e-3) / 0.06e-3); };
+  const LoadHistory h = sample([](double u) { return spiked(u); }, 30e-3, 1e-5);
+  const double bin = 1e-3 * gauge;
+  const CompressionMetrics m = compression_metrics(h, gauge, mass);
+  CHECK(m.transient_end > 0.12e-3);
+  CHECK(m.transient_end < 0.12e-3 + 2 * bin);
+  CHECK(std::abs(m.first_peak_displacement - 1e-3) <= bin);  // not the spike at 0.06 mm
+  CHECK(m.stiffness == Approx(Foam::k).epsilon(1e-9));        // the fit starts after it
+  CHECK(m.fit_from == Approx(m.transient_end));
+  CHECK(m.peak_displacement == Approx(30e-3));
+  // The work counts from the transient's end: the onset moves by less than two bins.
+  CHECK(std::abs(m.densification_displacement - Foam::densification_onset()) <= 2 * bin);
+  CHECK(m.energy == Approx(Foam::work(30e-3) + 1.2 * 0.06e-3).epsilon(1e-4));  // the spike's work counts
+  bool said = false;
+  for (const auto& n : m.notes) said = said || n.find("start-up transient") != std::string::npos;
+  CHECK(said);
+  // Ringing after the spike (a decaying oscillation of 0.1 mm wavelength and 10 % amplitude
+  // over the first 0.5 mm) is not a first peak either: each maximum is exceeded again at once.
+  static auto ringing = [](double u) {
+    return spiked(u) * (1 + (u < 0.5e-3 ? 0.1 * std::sin(2 * M_PI * u / 0.1e-3) * (1 - u / 0.5e-3) : 0.0));
+  };
+  const CompressionMetrics rung = compression_metrics(sample([](double u) { return ringing(u); }, 30e-3, 1e-5), gauge, mass);
+  CHECK(std::abs(rung.first_peak_displacement - 1e-3) <= bin);
+  CHECK(std::abs(rung.densification_displacement - Foam::densification_onset()) <= 2 * bin);
+  // Switching the detection off gives the old reading: the spike as the first peak.
+  CompressionSettings off;
+  off.transient_window = 0;
+  CHECK(compression_metrics(h, gauge, mass, off).first_peak_displacement < 0.1e-3);
 }

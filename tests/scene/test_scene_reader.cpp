@@ -221,3 +221,27 @@ TEST_CASE("Relative point files resolve against the scene file's directory", "[s
   CHECK_THROWS_WITH(read_scene((fs::path(scratch_dir()) / "none.toml").string()),
                     Catch::Contains("none.toml") && Catch::Contains("cannot read"));
 }
+
+TEST_CASE("A j2 material reads paper B's hardening law with defaults, and other models refuse its keys", "[scene]") {
+  const Scene full = parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
+                                         "y0 = \"668MPa\", y_inf = \"887MPa\", eta = 51.6, h = \"285MPa\" }"));
+  const MaterialSpec& m = full.body("column")->material;
+  CHECK(m.model == MaterialModel::j2);
+  CHECK(m.initial_yield == Approx(668e6));
+  CHECK(m.saturation_yield == Approx(887e6));
+  CHECK(m.saturation_rate == Approx(51.6));
+  CHECK(m.linear_hardening == Approx(285e6));
+  const Scene plain = parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
+                                          "y0 = \"668MPa\" }"));
+  const MaterialSpec& p = plain.body("column")->material;
+  CHECK(p.saturation_yield == Approx(668e6));  // perfect plasticity unless told
+  CHECK(p.saturation_rate == 0);
+  CHECK(p.linear_hardening == 0);
+  CHECK_THROWS_WITH(parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\" }")),
+                    Catch::Contains("scene.toml:13") && Catch::Contains("y0"));
+  CHECK_THROWS_WITH(parse(with_line(13, "material = { E = \"10MPa\", nu = 0.4, density = \"1.05g/cm^3\", y0 = \"1MPa\" }")),
+                    Catch::Contains("y0"));
+  CHECK_THROWS_WITH(parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
+                                        "y0 = \"668MPa\", eta = -1 }")),
+                    Catch::Contains("eta"));
+}

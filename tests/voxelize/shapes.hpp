@@ -8,6 +8,7 @@
 #include <string>
 
 #include "geometry/strut_graph.hpp"
+#include "levelset/level_set_units.hpp"
 #include "levelset/solid_primitive.hpp"
 #include "levelset/strut_level_set.hpp"
 
@@ -45,9 +46,12 @@ struct AnalyticSolid {
   }
   openvdb::FloatGrid::Ptr level_set(double voxel, double half_width) const {
     if (name == "sphere")
+    {
+      const double k = grid_units_per_metre;  // grids are in millimetres
       return openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
-          float(radius), openvdb::Vec3f(float(a.x()), float(a.y()), float(a.z())), float(voxel),
+          float(k * radius), openvdb::Vec3f(float(k * a.x()), float(k * a.y()), float(k * a.z())), float(k * voxel),
           float(half_width));
+    }
     return strut_graph_level_set(graph(), voxel, half_width);
   }
 };

@@ -19,6 +19,7 @@
 #include "geometry/graph_checks.hpp"
 #include "geometry/lattice.hpp"
 #include "geometry/plates.hpp"
+#include "levelset/level_set_units.hpp"
 #include "levelset/solid_measures.hpp"
 #include "levelset/strut_level_set.hpp"
 #include "levelset/strut_surface.hpp"
@@ -147,6 +148,8 @@ double smallest_radius(const latmpm::StrutGraph& g) {
 double voxel_size(const latmpm::CommandLine& cl, const char* option, const latmpm::StrutGraph& g) {
   const double value = cl.quantity(option, latmpm::dimension::length);
   if (!(value > 0)) throw latmpm::InputError(std::string("--") + option, "", "must be positive");
+  if (value < latmpm::smallest_voxel_m)
+    throw latmpm::InputError(std::string("--") + option, "", "finer than the smallest level-set voxel, 0.1 um");
   const double across = latmpm::solid_bounds(g).sizes().maxCoeff() / value;
   if (across > 20000)
     throw latmpm::InputError(std::string("--") + option, "",
@@ -246,11 +249,13 @@ int run(int argc, char** argv) {
       std::cerr << "  STEP: " << step.solids << " solids fused in " << format_duration(step.seconds) << "\n";
   }
 
-  // 5. Everything succeeded: publish the files, then the summary.
+  // 5. The summary's measures (the volume needs the full ±3-voxel band, LevelSetMeasure's
+  //    smeared delta), then, everything having succeeded, publish the files.
+  SolidMeasures measures;
+  if (report) measures = measure_solid(graph, *level_set_with_progress(graph, summary_voxel, 3.0, report));
   for (auto* out : {h5_out.get(), stl_out.get(), step_out.get()})
     if (out) out->commit();
-  // The volume needs the full ±3-voxel band (LevelSetMeasure's smeared delta).
-  if (report) print_summary(graph, measure_solid(graph, *level_set_with_progress(graph, summary_voxel, 3.0, report)), radius);
+  if (report) print_summary(graph, measures, radius);
   return exit_ok;
 }
 

@@ -1,6 +1,8 @@
 // latmpm-voxelize: geometry (a strut graph from latmpm-lattice, or an STL part) → material
 // points on the solver's grid. Method and accuracy: docs/voxelize.md; file: docs/formats.md.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -20,6 +22,7 @@
 #include "points/xdmf.hpp"
 #include "voxelize/mesh_placement.hpp"
 #include "voxelize/resolution_guard.hpp"
+#include "voxelize/resource_estimate.hpp"
 #include "voxelize/solid_mesh_gate.hpp"
 #include "voxelize/voxelize.hpp"
 
@@ -28,9 +31,10 @@ namespace {
 const char* manual = R"(latmpm-voxelize: turn a lattice (or an STL part) into material points for latmpm-solve.
 
 Input: a strut graph written by latmpm-lattice (a file, or - for stdin), or an STL file
-(ASCII or binary) with --units for its length unit; --scale, --rotate and --translate
-place an STL part (scale, then rotations in order, then translation; z is the compression
-axis). An OpenVDB level set is built straight from the strut graph's capsule distances, or
+(ASCII or binary) with --units for its length unit; --scale, --rotate, --place and
+--translate place an STL part (scale, then rotations in order, then --place centres it on
+x = y = 0 and stands it on z = 0, then translation, then --stand-on shifts it in z onto
+the top of another point set; z is the compression axis). An OpenVDB level set is built straight from the strut graph's capsule distances, or
 from the mesh (meshToLevelSet), and ppc^3 points per grid cell of size --cell are placed
 on the solver's lattice (grid nodes at i*h, points at (i + (k + 1/2)/ppc)*h) inside the
 solid. Points at the surface carry the fraction of their sub-cell inside the solid, so the
@@ -48,6 +52,7 @@ Sample runs:
   $ latmpm-lattice --preset T2P30 -o - | latmpm-voxelize - --cell 0.64mm --ppc 2 -o t2p30-points.h5
   $ latmpm-voxelize $LATMPM_SOURCE_DIR/data/stl/cylinder.stl --units mm --cell 0.5mm --ppc 2 -o part.h5
   $ latmpm-voxelize $LATMPM_SOURCE_DIR/data/stl/sphere-ascii.stl --units mm --rotate x:90deg --translate 0mm,0mm,6mm --cell 1mm -o sphere.h5
+  $ latmpm-voxelize $LATMPM_SOURCE_DIR/data/stl/cylinder.stl --units mm --rotate y:90deg --place --cell 0.5mm -o lying.h5
   $ latmpm-voxelize $LATMPM_SOURCE_DIR/data/stl/box-with-hole.stl --units mm --repair --cell 1mm -o repaired.h5
   $ latmpm-lattice --column --diameter 2.4mm --length 16mm -o - | latmpm-voxelize - --cell 0.2mm --ppc 2 -o - > column-points.h5 && h5ls -r column-points.h5
 )";
@@ -62,11 +67,16 @@ void declare_options(latmpm::CommandLine& cl) {
   cl.option("units", "UNIT", "STL: length unit of the file's coordinates, e.g. mm, m, in");
   cl.option("scale", "FACTOR", "STL: uniform scale factor", "1");
   cl.repeated_option("rotate", "AXIS:ANGLE", "STL: rotate about x, y or z, e.g. x:90deg (repeatable, in order)");
-  cl.option("translate", "X,Y,Z", "STL: translation after scaling and rotating, e.g. 0mm,0mm,5mm");
+  cl.flag("place", "STL: after rotating, centre the part on x = y = 0 and stand it on z = 0");
+  cl.option("translate", "X,Y,Z", "STL: translation after scaling, rotating and --place, e.g. 0mm,0mm,5mm");
+  cl.option("stand-on", "POINTS", "STL: last, shift along z to stand on the top of this point set's points "
+                                  "(e.g. a platen on the specimen)");
   cl.option("body", "NAME", "STL: body name of the part", "part");
   cl.flag("repair", "STL: fix what CGAL can (stitch, orient, drop degenerate faces, fill small holes)");
   cl.flag("no-self-intersection-check", "STL: skip the (slowest) check for self-intersections");
   cl.flag("force", "voxelize even with less than one point across the thinnest strut");
+  cl.option("max-memory", "BYTES", "refuse work estimated to need more memory, e.g. 8GB "
+                                   "[default: the machine's physical memory]");
   cl.flag("quiet", "no summary or progress on stderr");
 }
 
@@ -85,21 +95,38 @@ bool is_hdf5(const std::string& path) {
   return in.gcount() == 8 && std::string(head, 8) == std::string("\x89HDF\r\n\x1a\n", 8);
 }
 
-latmpm::TriangleMesh load_part(const latmpm::CommandLine& cl, const latmpm::InputFile& input, bool report) {
+// The highest point of a point set's sub-cells (m): where a part standing on it begins.
+double points_top(const std::string& path) {
+  using namespace latmpm;
+  const PointSet points = read_point_set(Hdf5File(path, Hdf5File::Mode::read));
+  if (points.size() == 0) throw InputError("--stand-on", path, "holds no points");
+  double top = -INFINITY;
+  for (size_t i = 0; i < points.size(); ++i) top = std::max(top, points.position[i].z() + points.half_size[i].z());
+  return top;
+}
+
+double stl_metres_per_unit(const latmpm::CommandLine& cl) {
   using namespace latmpm;
   if (!cl.given("units")) throw InputError("--units", "", "required for STL input (the file's length unit, e.g. mm)");
-  const double metres_per_unit = parse_quantity("1" + cl.text("units"), dimension::length, "--units");
-  TriangleMesh mesh = read_stl(input.path(), metres_per_unit);
+  return parse_quantity("1" + cl.text("units"), dimension::length, "--units");
+}
+
+latmpm::TriangleMesh load_part(const latmpm::CommandLine& cl, const latmpm::InputFile& input, bool report) {
+  using namespace latmpm;
+  TriangleMesh mesh = read_stl(input.path(), stl_metres_per_unit(cl));
   Placement placement;
   placement.scale = cl.number("scale");
   if (!(placement.scale > 0)) throw InputError("--scale", "", "must be a positive factor");
   for (const std::string& r : cl.all("rotate")) placement.rotations.push_back(parse_axis_rotation(r, "--rotate"));
+  placement.place = cl.flag_set("place");
+  if (cl.given("stand-on")) placement.stand_on_z = points_top(cl.text("stand-on"));
   if (cl.given("translate")) placement.translation = parse_length_vector(cl.text("translate"), "--translate");
   place_mesh(mesh, placement);
 
   const MeshGateResult gate = pass_mesh_gate(mesh, input.display_name(), cl.flag_set("repair"),
                                              !cl.flag_set("no-self-intersection-check"));
   if (report) {
+    if (gate.weld.vertices_welded) std::cerr << "  weld: " << describe(gate.weld) << "\n";
     std::cerr << "  mesh: " << describe(gate.found) << "\n";
     if (gate.repaired) {
       std::cerr << "  repair:";
@@ -166,6 +193,8 @@ int run(int argc, char** argv) {
       throw InputError("--voxel", "", "coarser than the point spacing " + mm(options.spacing()) +
                                           " would misplace surface volumes; use at most that");
   }
+  const double max_memory =
+      cl.given("max-memory") ? parse_bytes(cl.text("max-memory"), "--max-memory") : physical_memory_bytes();
   InputFile input(cl.text("input"), "input");
   OutputFile output(cl.text("output"), "--output");
   std::unique_ptr<OutputFile> xdmf;
@@ -187,8 +216,9 @@ int run(int argc, char** argv) {
   Provenance provenance = Provenance::for_run("latmpm-voxelize", argc, argv);
   provenance.inputs = {cl.text("input")};
   Voxelized result;
+  std::string extent, hint;
   if (is_hdf5(input.path())) {
-    refuse(cl, {"units", "rotate", "translate", "body", "repair", "no-self-intersection-check"},
+    refuse(cl, {"units", "rotate", "place", "translate", "stand-on", "body", "repair", "no-self-intersection-check"},
            "applies only to STL input");
     if (cl.text("scale") != "1") throw InputError("--scale", "", "applies only to STL input");
     const Hdf5File file(input.path(), Hdf5File::Mode::read);
@@ -204,14 +234,30 @@ int run(int argc, char** argv) {
                                      "a larger --ppc, or --force");
     if (resolution.verdict == StrutResolution::Verdict::coarse)
       std::cerr << "latmpm-voxelize: warning: fewer than 3 points across the thinnest strut: bending will be too stiff\n";
+    if (resolution.has_struts && resolution.cells_across < 2)
+      std::cerr << "latmpm-voxelize: warning: thin struts: " << describe(resolution) << ", "
+                << mm(2 * options.cell_size - resolution.diameter) << " below two cells: volume and stiffness errors grow\n";
+    const ResourceEstimate estimate = estimate_resources(graph, options);
+    check_resources(estimate, options, max_memory, input.display_name());
+    if (report) std::cerr << "  extent " << describe_extent(estimate.bounds) << "\n";
     result = voxelize_strut_graph(graph, options);
   } else {
     const TriangleMesh mesh = load_part(cl, input, report);
+    const ResourceEstimate estimate = estimate_resources(mesh, options);
+    hint = unit_hint(estimate.bounds, stl_metres_per_unit(cl), options.spacing());
+    check_resources(estimate, options, max_memory, input.display_name(), hint);
+    if (report) std::cerr << "  extent " << describe_extent(estimate.bounds) << "\n";
     result = voxelize_mesh(mesh, cl.text("body"), options);
+    extent = describe_extent(estimate.bounds);
   }
   if (progress) progress->finish();
+  if (result.thin.any())
+    std::cerr << "latmpm-voxelize: warning: thin features: " << describe(result.thin, options.cell_size)
+              << ": volume and stiffness errors grow\n";
   if (result.points.size() == 0)
-    throw InputError(input.display_name(), "volume", "the solid has zero volume at this resolution: no point inside");
+    throw InputError(input.display_name(), "volume",
+                     "the solid has zero volume at this resolution: no point inside (extent " + extent + ")" +
+                         (hint.empty() ? "" : "; " + hint));
   result.points.validate("latmpm-voxelize");
 
   // 3. Output: point set with provenance, then the XDMF view beside it.

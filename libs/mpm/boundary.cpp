@@ -1,0 +1,136 @@
+#include "mpm/boundary.hpp"
+
+#include "mpm/checkpoint_io.hpp"
+#include "mpm/grid_update.hpp"
+#include "mpm/rigid_contact.hpp"
+
+namespace latmpm::mpm {
+
+// --- Point-defined: fixed and driven point bodies, held points ---------------------------
+
+void PointBoundary::constrain(BoundaryPass& pass) {
+  // The node update imposed the constraint on the nodes this body's points marked in P2G and
+  // summed the reaction per body (grid_update.cpp).
+  reaction = pass.node_reactions->force[body];
+  power = pass.node_reactions->power[body];
+}
+
+void PointBoundary::advance(const BoundaryPass& pass, BoundaryLedger& ledger) {
+  if (role != BodyRole::driven) return;
+  displacement += pass.dt * velocity;
+  ledger.external_power += power;
+  ledger.constraint_power += power;
+  ledger.max_speed = std::max(ledger.max_speed, velocity.norm());
+}
+
+void PointBoundary::save(CheckpointWriter& out) const {
+  out.rows("displacement", std::vector<Vec3>{displacement});
+  out.rows("reaction", std::vector<Vec3>{reaction});
+}
+
+void PointBoundary::load(const CheckpointReader& in) {
+  displacement = in.rows<Vec3>("displacement", 1)[0];
+  reaction = in.rows<Vec3>("reaction", 1)[0];
+}
+
+BoundaryReport PointBoundary::report() const {
+  BoundaryReport r;
+  r.name = name;
+  r.role = role == BodyRole::driven ? BoundaryRole::driven : role == BodyRole::fixed ? BoundaryRole::fixed
+                                                                                      : BoundaryRole::held;
+  r.displacement = displacement;
+  r.reaction = reaction;
+  r.velocity = velocity;
+  return r;
+}
+
+// --- Geometric rigid bodies, no-slip -----------------------------------------------------
+
+namespace {
+Real claim_marker(size_t index) { return -Real(index + 1); }
+}  // namespace
+
+void RigidBoundary::constrain(BoundaryPass& pass) {
+  reaction = couple_rigid_body(pass.grid, pass.cell_size, pass.dt, settings, state, claim_marker(index));
+}
+
+void RigidBoundary::impose(BoundaryPass& pass, int lane) {
+  impose_rigid_velocity(pass.grid, pass.cell_size, lane, settings, state, claim_marker(index));
+}
+
+namespace {
+// A geometric body's part after the step: its work on the model at power `power`, then its
+// motion under the reaction (rigid_body.hpp), then its energy.
+void advance_rigid(RigidBoundary& b, Real power, const BoundaryPass& pass, BoundaryLedger& ledger) {
+  ledger.external_power += power;
+  // Bodies of prescribed motion are boundary conditions: their work enters the balance (a
+  // fixed no-slip body's is zero; a fixed penalty body's is its springs' work on the points).
+  if (b.settings.motion != RigidMotion::free) ledger.prescribed_work += pass.dt * power;
+  advance_rigid_body(b.settings, b.state, b.reaction, pass.gravity, pass.dt);
+  ledger.energy += rigid_kinetic_energy(b.settings, b.state) + rigid_potential_energy(b.settings, b.state, pass.gravity);
+  ledger.max_speed = std::max(ledger.max_speed, b.state.velocity.norm());
+}
+}  // namespace
+
+void RigidBoundary::advance(const BoundaryPass& pass, BoundaryLedger& ledger) {
+  advance_rigid(*this, reaction.dot(state.velocity), pass, ledger);
+}
+
+void RigidBoundary::save(CheckpointWriter& out) const {
+  out.rows("displacement", std::vector<Vec3>{state.displacement});
+  out.rows("velocity", std::vector<Vec3>{state.velocity});
+  out.rows("reaction", std::vector<Vec3>{state.reaction});
+  out.scalar("work", state.work);
+}
+
+void RigidBoundary::load(const CheckpointReader& in) {
+  state.displacement = in.rows<Vec3>("displacement", 1)[0];
+  state.velocity = in.rows<Vec3>("velocity", 1)[0];
+  state.reaction = in.rows<Vec3>("reaction", 1)[0];
+  state.work = in.scalar("work");
+  reaction = state.reaction;
+}
+
+BoundaryReport RigidBoundary::report() const {
+  BoundaryReport r;
+  r.name = settings.name;
+  r.role = settings.motion == RigidMotion::driven ? BoundaryRole::driven
+           : settings.motion == RigidMotion::fixed ? BoundaryRole::fixed
+                                                   : BoundaryRole::free;
+  r.displacement = state.displacement;
+  r.reaction = state.reaction;
+  r.velocity = state.velocity;
+  r.kinetic_energy = rigid_kinetic_energy(settings, state);
+  return r;
+}
+
+// --- Geometric rigid bodies, penalty contact ---------------------------------------------
+
+void PenaltyBoundary::constrain(BoundaryPass& pass) {
+  // Its push is the sum of its points' contact forces from the contact stage.
+  reaction = Vec3::Zero() + pass.contact->reaction[index];
+}
+
+void PenaltyBoundary::advance(const BoundaryPass& pass, BoundaryLedger& ledger) {
+  // Its power on the model is that of its contact forces at the points' velocities, the mean
+  // of the step's start and end (rigid_contact.hpp): the energy its springs give back counts
+  // as work put in, and their stretch and the friction's loss stay outside the balance.
+  const Real power = Real(0.5) * (pass.contact->power[index] + (*pass.contact_power_end)[index]);
+  advance_rigid(*this, power, pass, ledger);
+}
+
+const RigidBoundary* as_rigid(const Boundary& boundary) {
+  if (const auto* r = std::get_if<RigidBoundary>(&boundary)) return r;
+  return std::get_if<PenaltyBoundary>(&boundary);
+}
+
+RigidBoundary* as_rigid(Boundary& boundary) {
+  return const_cast<RigidBoundary*>(as_rigid(static_cast<const Boundary&>(boundary)));
+}
+
+std::string checkpoint_name(const Boundary& boundary) {
+  if (const auto* p = std::get_if<PointBoundary>(&boundary)) return "point." + p->name;
+  return "rigid." + as_rigid(boundary)->settings.name;
+}
+
+}  // namespace latmpm::mpm
