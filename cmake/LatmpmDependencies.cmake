@@ -19,6 +19,17 @@ if(NOT TARGET latmpm_gmsh)
   add_library(latmpm::gmsh ALIAS latmpm_gmsh)
 endif()
 
+# SuiteSparse CHOLMOD (libsuitesparse-dev) for the static solver's sparse Cholesky, used
+# through Eigen's CholmodSupport; Debian's SuiteSparse 5 ships no CMake package.
+find_library(CHOLMOD_LIBRARY NAMES cholmod REQUIRED)
+find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+if(NOT TARGET latmpm_cholmod)
+  add_library(latmpm_cholmod INTERFACE)
+  target_link_libraries(latmpm_cholmod INTERFACE ${CHOLMOD_LIBRARY})
+  target_include_directories(latmpm_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
+  add_library(latmpm::cholmod ALIAS latmpm_cholmod)
+endif()
+
 if(NOT TARGET latmpm_hdf5)
   add_library(latmpm_hdf5 INTERFACE)
   target_link_libraries(latmpm_hdf5 INTERFACE ${HDF5_C_LIBRARIES})

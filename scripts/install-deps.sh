@@ -6,6 +6,7 @@ packages=(
   build-essential cmake pkg-config git ccache
   libcgal-dev libeigen3-dev libopenvdb-dev libboost-iostreams-dev libtbb-dev
   libhdf5-dev hdf5-tools libgmsh-dev catch2 gnuplot-nox libtomlplusplus-dev
+  libsuitesparse-dev libopenblas0-pthread
 )
 missing=()
 for p in "${packages[@]}"; do

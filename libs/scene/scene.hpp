@@ -94,6 +94,18 @@ struct EndCondition {
   std::string where;
 };
 
+// [solver]: the explicit MPM time stepping (default) or the static equilibrium solve on the
+// MPM grid (paper C Sec. 3.3, libs/statics, docs/statics.md), which moves the driven body
+// to run.end.plate_displacement in `increments` equilibrium steps.
+struct SolverSpec {
+  enum Kind { explicit_dynamics, static_equilibrium } kind = explicit_dynamics;
+  int increments = 20;                  // static: equilibrium steps to the end travel
+  std::string linear_solver = "cholmod";  // static: "cholmod", "ldlt" or "cg"
+  double tolerance = 1e-8;              // static: relative residual force of each increment
+  bool check_stability = true;          // static: end the path at the first unstable equilibrium
+  std::string where;
+};
+
 struct Scene {
   std::string source;  // the scene file as named by the user
   EndCondition end;
@@ -123,6 +135,7 @@ struct Scene {
   long series_every = 100;    // steps between series rows
   long snapshot_every = 0;    // steps between particle snapshots, 0 = first and last only
   std::string record_tag = "record";  // point tag of the record layer (paper A Sec. 5.1)
+  SolverSpec solver;
 
   // The scene as run: the document after --set overrides, with every default filled in
   // and point-file paths made absolute. Written to RUN_DIR/scene.toml.

@@ -263,6 +263,24 @@ void read_output(TableReader output, Scene& s) {
   out->finish();
 }
 
+void read_solver(TableReader solver, Scene& s) {
+  SolverSpec& spec = s.solver;
+  spec.where = solver.where("kind");
+  spec.kind = solver.choice("kind", {"explicit", "static"}, "explicit") == "static" ? SolverSpec::static_equilibrium
+                                                                                   : SolverSpec::explicit_dynamics;
+  if (spec.kind == SolverSpec::static_equilibrium) {
+    spec.increments = int(solver.integer("increments", 20));
+    if (spec.increments < 1) solver.fail("increments", "must be at least 1");
+    spec.linear_solver = solver.choice("linear_solver", {"cholmod", "ldlt", "cg"}, "cholmod");
+    spec.tolerance = solver.number("tolerance", 1e-8);
+    if (!(spec.tolerance > 0 && spec.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
+    spec.check_stability = solver.boolean("check_stability", true);
+    if (s.end.kind != EndCondition::plate_displacement)
+      solver.fail("kind", "a static solve needs run.end = { plate_displacement = \"...\" }");
+  }
+  solver.finish();
+}
+
 // Cross-section checks: what one table alone cannot know.
 void check_consistency(const Scene& s) {
   int driven = 0;
@@ -356,6 +374,7 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::s
   if (root.has("rigid_bodies")) read_rigid_bodies(root.table("rigid_bodies"), s);
   read_output(root.table_or_empty("output"), s);
   read_checkpoint(root.table_or_empty("checkpoint"), s);
+  read_solver(root.table_or_empty("solver"), s);
   root.finish();
   check_consistency(s);
 

@@ -1,0 +1,121 @@
+#include "static_run/static_scene_problem.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "mpm/material.hpp"
+#include "mpm/shape_function_kind.hpp"
+
+namespace latmpm {
+
+namespace {
+mpm::MaterialParameters material_of(const MaterialSpec& m) {
+  mpm::MaterialParameters p;
+  p.kind = m.model == MaterialModel::neo_hookean ? mpm::MaterialKind::neo_hookean : mpm::MaterialKind::linear_elastic;
+  p.young_modulus = m.youngs_modulus;
+  p.poisson_ratio = m.poisson_ratio;
+  p.density = m.density;
+  return p;
+}
+}  // namespace
+
+StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points) {
+  for (const RigidBodySpec& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::free)
+      throw InputError(r.where, "rigid_bodies." + r.name + ".motion",
+                       "the static solver has no free bodies (no inertia): use driven or fixed");
+  StaticSceneProblem out;
+  out.half_size.resize(points.size());
+  for (size_t p = 0; p < points.size(); ++p) {
+    out.half_size[p] = points.half_size[p];
+    for (int a = 0; a < 3; ++a)
+      if (!(out.half_size[p][a] > 0)) out.half_size[p][a] = points.cell_size / (2 * std::max(points.ppc, 1));
+  }
+  // Material points and their energies (one per deformable body).
+  std::vector<statics::Vec3> X, half;
+  std::vector<statics::Real> volume;
+  std::vector<uint16_t> material;
+  std::vector<statics::ElasticEnergy> energies;
+  std::vector<int> energy_of_body(scene.bodies.size(), -1);
+  const BodySpec* driven = nullptr;
+  const RigidBodySpec* driven_rigid = nullptr;
+  for (const RigidBodySpec& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) driven_rigid = &r;
+  for (size_t b = 0; b < scene.bodies.size(); ++b) {
+    const BodySpec& body = scene.bodies[b];
+    if (body.role == BodyRole::deformable) {
+      energy_of_body[b] = int(energies.size());
+      energies.push_back(statics::ElasticEnergy::from(material_of(body.material)));
+    } else if (body.role == BodyRole::driven) {
+      if (driven) throw InputError(body.where, "bodies." + body.name + ".role", "the static solver drives one body");
+      driven = &body;
+    }
+  }
+  if (bool(driven) + bool(driven_rigid) != 1)
+    throw InputError(scene.solver.where, "solver.kind", "a static solve needs exactly one driven body (the platen)");
+  for (size_t p = 0; p < points.size(); ++p) {
+    const int e = energy_of_body[size_t(points.body[p])];
+    if (e < 0) continue;
+    out.material_points.push_back(p);
+    X.push_back(points.position[p]);
+    half.push_back(out.half_size[p]);
+    volume.push_back(points.volume[p]);
+    material.push_back(uint16_t(e));
+  }
+  const mpm::ShapeFunctionKind shape = mpm::parse_shape_function(to_string(scene.shape), scene.where, "grid.shape");
+  out.problem = std::make_unique<statics::StaticProblem>(statics::build_narrow_band(X, half, scene.cell_size, shape),
+                                                         std::move(volume), std::move(material), std::move(energies));
+
+  // Supports and platen: the band nodes their points reach.
+  std::vector<statics::Vec3> support_x, support_half, platen_x, platen_half;
+  for (size_t p = 0; p < points.size(); ++p) {
+    const BodySpec& body = scene.bodies[size_t(points.body[p])];
+    bool held = false;
+    if (!body.hold_tag.empty()) {
+      auto tag = points.tags.find(body.hold_tag);
+      held = tag != points.tags.end() && tag->second[p];
+    }
+    if (body.role == BodyRole::fixed || held) support_x.push_back(points.position[p]), support_half.push_back(out.half_size[p]);
+    if (body.role == BodyRole::driven) platen_x.push_back(points.position[p]), platen_half.push_back(out.half_size[p]);
+  }
+  const statics::NarrowBand& band = out.problem->band();
+  out.loading.support_nodes = statics::nodes_reached_by(band, support_x, support_half);
+  out.loading.platen_nodes = statics::nodes_reached_by(band, platen_x, platen_half);
+  // Rigid bodies by geometry: the band nodes inside them (bonded: the static counterpart of
+  // the explicit solver's no-slip grid coupling).
+  // A half-space short of the material is first moved into contact (the explicit run's
+  // travel before its first contact): its plane then passes through the nearest band nodes.
+  for (const RigidBodySpec& r : scene.rigid_bodies) {
+    auto& nodes = r.motion == RigidBodySpec::driven ? out.loading.platen_nodes : out.loading.support_nodes;
+    double gap = 0;
+    if (r.shape == RigidBodySpec::half_space) {
+      gap = std::numeric_limits<double>::infinity();
+      for (size_t n = 0; n < band.node_count(); ++n)
+        gap = std::min(gap, (band.node_position(n) - r.point).dot(r.normal.normalized()));
+      gap = std::max(gap, 0.0);
+      out.contact_gap = std::max(out.contact_gap, gap);
+    }
+    for (size_t n = 0; n < band.node_count(); ++n) {
+      const Eigen::Vector3d x = band.node_position(n);
+      const bool inside = r.shape == RigidBodySpec::half_space
+                              ? (x - r.point).dot(r.normal.normalized()) <= gap + 1e-9 * scene.cell_size
+                              : ((x - r.min).array() >= 0).all() && ((r.max - x).array() >= 0).all();
+      if (inside) nodes.push_back(n);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  }
+  const std::string driven_where = driven ? driven->where : driven_rigid->where;
+  if (out.loading.platen_nodes.empty())
+    throw InputError(driven_where, "driven body", "the driven body touches no node of the material");
+  if (out.loading.support_nodes.empty())
+    throw InputError(scene.solver.where, "solver.kind", "a static solve needs a support: a fixed body or held points");
+  out.loading.direction = (driven ? driven->velocity : driven_rigid->velocity).normalized();
+  out.loading.travel = scene.end.value;
+  out.loading.increments = scene.solver.increments;
+  out.loading.check_stability = scene.solver.check_stability;
+  return out;
+}
+
+}  // namespace latmpm

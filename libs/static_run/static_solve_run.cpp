@@ -1,0 +1,179 @@
+#include "static_run/static_solve_run.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "core/errors.hpp"
+#include "core/file_transfer.hpp"
+#include "run_output/run_log.hpp"
+#include "run_output/run_status.hpp"
+#include "run_output/series_writer.hpp"
+#include "run_output/snapshot_writer.hpp"
+#include "scene/scene_points.hpp"
+#include "static_run/static_scene_problem.hpp"
+#include "statics/elastic_energy.hpp"
+
+namespace latmpm {
+
+namespace {
+std::string format(const char* fmt, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, value);
+  return buf;
+}
+
+const std::vector<SeriesColumn> static_columns = {
+    {"step", "1", "converged load increments"},
+    {"time", "s", "pseudo-time: platen travel / driven speed (no dynamics: a static solve)"},
+    {"displacement", "m", "driven body's travel along the loading axis"},
+    {"load_driven", "N", "reaction on the driven body along the loading axis, compression positive"},
+    {"load_fixed", "N", "reaction on the supports against the loading axis, compression positive"},
+    {"strain_energy", "J", "sum V0 psi over deformable points"},
+    {"newton_iterations", "1", "projected Newton steps of the increment"},
+    {"linear_iterations", "1", "linear solver iterations of the increment (1 per direct solve)"},
+    {"residual", "1", "relative residual force at convergence"},
+    {"min_jacobian", "1", "smallest det F over the points"},
+    {"stable", "1", "1: the true tangent is positive definite (0: the static path ends here)"},
+};
+
+// The points at displacement u: material points at X + u(X) with σ and J; supports at
+// rest, the platen moved by travel·direction.
+ParticleSnapshot static_snapshot(const PointSet& points, const Scene& scene, const StaticSceneProblem& sp,
+                                 const statics::Vector& u, double travel, long step, double time) {
+  ParticleSnapshot s;
+  s.resize(points.size());
+  s.step = step;
+  s.time = time;
+  for (const auto& b : scene.bodies) s.body_names.push_back(b.name);
+  for (size_t p = 0; p < points.size(); ++p) {
+    Eigen::Vector3d x = points.position[p];
+    if (scene.bodies[size_t(points.body[p])].role == BodyRole::driven) x += travel * sp.loading.direction;
+    for (int a = 0; a < 3; ++a) s.position[3 * p + a] = x[a];
+    s.jacobian[p] = 1;
+    s.body[p] = points.body[p];
+  }
+  const statics::StaticProblem& problem = *sp.problem;
+  const statics::NarrowBand& band = problem.band();
+  for (size_t q = 0; q < sp.material_points.size(); ++q) {
+    const size_t p = sp.material_points[q];
+    Eigen::Vector3d x = points.position[p];
+    for (uint32_t e = band.point_offset[q]; e < band.point_offset[q + 1]; ++e)
+      x += band.entry_weight[e] * u.segment<3>(Eigen::Index(3 * band.entry_node[e]));
+    for (int a = 0; a < 3; ++a) s.position[3 * p + a] = x[a];
+    const statics::Mat3 F = problem.deformation_gradient(q, u);
+    const statics::Mat3 sigma = statics::cauchy_stress(F, problem.first_piola(q, F));
+    const float t6[6] = {float(sigma(0, 0)), float(sigma(0, 1)), float(sigma(0, 2)),
+                         float(sigma(1, 1)), float(sigma(1, 2)), float(sigma(2, 2))};
+    for (int c = 0; c < 6; ++c) s.stress[6 * p + c] = t6[c];
+    s.von_mises[p] = float(mpm::von_mises(mpm::to_voigt(sigma)));
+    s.jacobian[p] = float(F.determinant());
+  }
+  return s;
+}
+}  // namespace
+
+StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, const std::string& run_dir,
+                                    bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  PointSet points = load_scene_points(scene, &provenance);
+  StaticSceneProblem sp = make_static_problem(scene, points);
+  statics::StaticProblem& problem = *sp.problem;
+  const statics::LinearSolverKind solver_kind = statics::parse_linear_solver(scene.solver.linear_solver);
+  statics::NewtonOptions newton;
+  newton.tolerance = scene.solver.tolerance;
+
+  std::filesystem::create_directories(run_dir);
+  {
+    OutputFile out(run_dir + "/scene.toml", run_dir + "/scene.toml");
+    std::ofstream file(out.temp_path(), std::ios::trunc);
+    file << "# Resolved scene written by " << provenance.tool << " " << provenance.version << "\n# "
+         << provenance.command_line << "\n" << scene.resolved_toml;
+    if (!file.flush()) throw InputError(run_dir + "/scene.toml", "", "cannot write (disk full?)");
+    file.close();
+    out.commit();
+  }
+  RunLog log(run_dir + "/log.txt");
+  log.line(provenance.tool + " " + provenance.version);
+  log.line("command: " + provenance.command_line);
+  log.line("scene: " + scene.source + " (resolved copy: scene.toml)");
+  log.line("static solve (paper C Sec. 3.3): projected Newton on the narrow band, linear solver " +
+           scene.solver.linear_solver + ", tolerance " + format("%g", scene.solver.tolerance));
+  log.line("points: " + std::to_string(problem.point_count()) + " material, band nodes " +
+           std::to_string(problem.band().node_count()) + " (" + std::to_string(problem.dof_count()) +
+           " unknowns), support nodes " + std::to_string(sp.loading.support_nodes.size()) + ", platen nodes " +
+           std::to_string(sp.loading.platen_nodes.size()) + ", shape " + to_string(scene.shape) + ", cell " +
+           format("%g", scene.cell_size) + " m");
+  log.line("loading: travel " + format("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
+           " increments" +
+           (sp.contact_gap > 0 ? ", from contact (the rigid platen first closed a gap of " +
+                                     format("%g", sp.contact_gap) + " m)"
+                               : ""));
+
+  double speed = 0;  // of the one driven body (checked by make_static_problem)
+  for (const auto& b : scene.bodies)
+    if (b.role == BodyRole::driven) speed = b.velocity.norm();
+  for (const auto& r : scene.rigid_bodies)
+    if (r.motion == RigidBodySpec::driven) speed = r.velocity.norm();
+  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", static_columns, provenance);
+  SnapshotWriter snapshots(run_dir, provenance);
+  statics::Vector zero = statics::Vector::Zero(Eigen::Index(problem.dof_count()));
+  snapshots.write(static_snapshot(points, scene, sp, zero, 0, 0, 0));
+  series.append({0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1});
+
+  long step = 0;
+  auto observe = [&](const statics::PathPoint& pt, const statics::Vector& u) {
+    ++step;
+    series.append({double(step), pt.travel / speed, pt.travel, pt.load, pt.support_load, pt.energy,
+                   double(pt.newton_iterations), double(pt.linear_iterations), pt.residual, pt.min_jacobian,
+                   pt.stable ? 1.0 : 0.0});
+    snapshots.write(static_snapshot(points, scene, sp, u, pt.travel, step, pt.travel / speed));
+    const std::string line = "increment " + std::to_string(step) + ": travel " + format("%.6g", pt.travel) +
+                             " m, load " + format("%.6g", pt.load) + " N, Newton " +
+                             std::to_string(pt.newton_iterations) + ", linear " +
+                             std::to_string(pt.linear_iterations) + ", residual " + format("%.2e", pt.residual) +
+                             ", min J " + format("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
+    log.line(line);
+    if (progress) std::cerr << "latmpm-solve: " << line << "\n";
+  };
+  statics::SparseSolver solver(solver_kind);
+  const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
+  series.save();
+
+  StaticSolveSummary s;
+  s.increments = int(step);
+  s.points = problem.point_count();
+  s.unknowns = problem.dof_count();
+  s.travel = path.last_stable_travel;
+  s.status = !path.ended ? "finished" : (path.end_reason == "tangent not positive definite" ? "unstable" : "not converged");
+  if (path.ended) {
+    s.end_travel = path.end_travel;
+    s.end_load = path.end_load;
+    log.line("the static path ends (" + path.end_reason + ") at travel " + format("%.6g", path.end_travel) +
+             " m, load " + format("%.6g", path.end_load) + " N (last stable: " +
+             format("%.6g", path.last_stable_travel) + " m, " + format("%.6g", path.last_stable_load) + " N)");
+  }
+  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
+  outcome.status = s.status == "not converged" ? "failed" : "finished";
+  outcome.exit_status = 0;
+  outcome.reason = path.ended ? "the static path ends (" + path.end_reason + ")" : "";
+  outcome.steps = s.increments;
+  outcome.simulated_time = s.travel / speed;
+  outcome.points = points.size();
+  outcome.wall_seconds = process_wall_seconds();
+  outcome.cpu_seconds = process_cpu_seconds();
+  outcome.stepping_wall_seconds = s.wall_seconds;
+  outcome.peak_memory_mb = process_peak_memory_mb();
+  write_run_status(run_dir, outcome, provenance);
+  // latmpm-post reads "status:" (finished / failed) and "stopped:" (why) lines.
+  if (path.ended)
+    log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format("%.6g", path.end_travel) + " m");
+  log.line(std::string("status: ") + (s.status == "not converged" ? "failed" : "finished") + " (static " + s.status +
+           "), " + std::to_string(s.increments) + " increments, wall " + format("%.2f", s.wall_seconds) + " s");
+  return s;
+}
+
+}  // namespace latmpm

@@ -1,0 +1,123 @@
+#include "statics/projected_newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "statics/inversion_free_step.hpp"
+
+namespace latmpm::statics {
+
+namespace {
+Vector free_part(const Vector& v, const std::vector<char>& fixed) {
+  Vector r = v;
+  for (size_t i = 0; i < fixed.size(); ++i)
+    if (fixed[i]) r[Eigen::Index(i)] = 0;
+  return r;
+}
+
+// Prescribed minus current displacement on the prescribed unknowns, zero elsewhere.
+Vector constrained_gap(const Dirichlet& dirichlet, const Vector& u) {
+  Vector gap = Vector::Zero(u.size());
+  for (size_t i = 0; i < dirichlet.fixed.size(); ++i)
+    if (dirichlet.fixed[i]) gap[Eigen::Index(i)] = dirichlet.value[Eigen::Index(i)] - u[Eigen::Index(i)];
+  return gap;
+}
+
+// Largest step along d keeping every det F_p ≥ margin·det F_p(u) (paper C Eq. 35).
+Real step_bound(const StaticProblem& problem, const Vector& u, const Vector& d, Real margin) {
+  const std::vector<Mat3> F = problem.deformation_gradients(u);
+  std::vector<Mat3> D = problem.deformation_gradients(d);
+  for (Mat3& m : D) m -= Mat3::Identity();
+  return std::min(Real(1), inversion_free_step(F, D, margin));
+}
+}  // namespace
+
+NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichlet, Vector& u,
+                               SparseSolver& solver, const NewtonOptions& options) {
+  NewtonReport report;
+  const std::vector<char>& fixed = dirichlet.fixed;
+  const Vector& f_ext = problem.external_force();
+  bool true_tangent_indefinite = false;  // found so once in this solve: not tried again
+  for (int k = 0;; ++k) {
+    const Vector f_int = problem.internal_force(u);
+    const Vector g = f_int - f_ext;
+    const Vector constraint_gap = constrained_gap(dirichlet, u);
+    const Real scale = std::max({f_int.norm(), f_ext.norm(), std::numeric_limits<Real>::min()});
+    const Real residual = free_part(g, fixed).norm() / scale;
+    const Real energy = problem.energy(u);
+    report.residual.push_back(residual);
+    report.energy.push_back(energy);
+    const bool boundary_moves = constraint_gap.lpNorm<Eigen::Infinity>() > 0;
+    if (!boundary_moves && residual <= options.tolerance) {
+      report.converged = true;
+      break;
+    }
+    if (k == options.max_iterations) {
+      report.failure = "no convergence in " + std::to_string(k) + " Newton steps (relative residual " +
+                       std::to_string(residual) + ")";
+      break;
+    }
+
+    // Newton direction (step 2–3): near the solution the true Hessian where it is
+    // positive definite (quadratic convergence), otherwise the projected one.
+    const bool try_true = !boundary_moves && !true_tangent_indefinite && residual <= options.true_tangent_below;
+    bool factorized = false;
+    Vector rhs;
+    for (const bool projected : {false, true}) {
+      if (!projected && !try_true) continue;
+      problem.assemble_hessian(u, projected);
+      SparseMatrix& H = problem.hessian();
+      rhs = -g - H * constraint_gap;
+      const Real diagonal = mean_diagonal(H);
+      for (size_t i = 0; i < fixed.size(); ++i)
+        if (fixed[i]) rhs[Eigen::Index(i)] = diagonal * constraint_gap[Eigen::Index(i)];
+      constrain_rows_and_columns(H, fixed, diagonal);
+      // The shift fixes the zero-energy modes of the point quadrature (docs/statics.md):
+      // negligible, and raised only while a projected factorisation fails.
+      for (Real shift = options.shift; shift <= 1e-2 && !factorized; shift *= 1e3) {
+        for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
+        factorized = solver.factorize(H);
+        if (!projected) break;
+      }
+      if (factorized) {
+        if (!projected) ++report.true_tangent_steps;
+        break;
+      }
+      if (!projected) true_tangent_indefinite = true;
+    }
+    if (!factorized) {
+      report.failure = "the projected Hessian is singular (a part of the body is not held)";
+      break;
+    }
+    LinearSolveStats stats;
+    Vector d = solver.solve(rhs, stats);
+    for (size_t i = 0; i < fixed.size(); ++i)  // exactly, whatever the solver's tolerance
+      if (fixed[i]) d[Eigen::Index(i)] = constraint_gap[Eigen::Index(i)];
+    report.linear_iterations += stats.iterations;
+    report.linear_residual = stats.relative_residual;
+    ++report.iterations;
+
+    // Step length (step 4): inversion-free bound, then det F > 0 before any energy.
+    Real alpha = problem.is_quadratic() ? Real(1) : step_bound(problem, u, d, options.inversion_margin);
+    const Real slope = g.dot(d);
+    const Real allowance = 1e-12 * std::abs(energy);  // round-off of E near the minimum
+    int halvings = 0;
+    for (;; alpha *= Real(0.5), ++halvings) {
+      if (halvings > options.max_halvings) break;
+      const Vector trial = u + alpha * d;
+      if (!problem.is_quadratic() && problem.min_jacobian(trial) <= 0) continue;
+      if (boundary_moves) break;  // the prescribed motion raises E: no sufficient decrease to ask
+      if (problem.energy(trial) <= energy + options.armijo * alpha * slope + allowance) break;
+    }
+    if (halvings > options.max_halvings) {
+      report.failure = "the line search found no decrease of the energy";
+      break;
+    }
+    u += alpha * d;
+    report.step.push_back(alpha);
+  }
+  report.min_jacobian = problem.min_jacobian(u);
+  return report;
+}
+
+}  // namespace latmpm::statics

@@ -1,0 +1,58 @@
+// Projected Newton with an inversion-free backtracking line search (paper C Algorithm 1,
+// Sec. 3.3): minimises E(u) of a StaticProblem under Dirichlet conditions.
+//   1. g = ∇E(u); stop when the free part ‖g_F‖ ≤ tolerance · max(‖f_int‖, ‖f‖).
+//   2. H = Σ_p Bᵀ Π(V_p ∂P/∂F) B with Π the semidefinite projection (spd_projection.hpp);
+//      rows and columns of prescribed unknowns replaced by the identity (scaled). Once the
+//      residual is small, the true Hessian is used instead wherever it is positive definite.
+//   3. Solve H d = −g (d = remaining prescribed motion on the constrained unknowns).
+//   4. α₀ = min(1, inversion-free bound) for neo-Hookean energies; halve α until
+//      det F_p(u + αd) > 0 for all points (checked before any energy is evaluated) and
+//      E(u + αd) ≤ E(u) + c α gᵀd (Armijo).
+// While prescribed unknowns still move (the first iteration of a load increment), the step
+// raises the energy by design: it is bounded by the inversion-free step only.
+// Linear elasticity is quadratic: one iteration reaches the solution.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "statics/dirichlet.hpp"
+#include "statics/sparse_solver.hpp"
+#include "statics/static_problem.hpp"
+
+namespace latmpm::statics {
+
+struct NewtonOptions {
+  Real tolerance = 1e-8;         // relative residual force at which the solve stops
+  int max_iterations = 50;
+  Real armijo = 1e-4;            // sufficient-decrease constant c
+  Real inversion_margin = 0.1;   // ε of the step bound: det F may shrink at most to ε det F per step
+  int max_halvings = 40;         // backtracking steps before the line search gives up
+  // Diagonal shift (× mean diagonal) added to the projected Hessian: the point quadrature
+  // leaves zero-energy modes where a part is two cells thick (quadratic B-splines, 2 points
+  // per cell: 5 nodes, 4 sample planes per axis). ×1000 while the factorisation fails.
+  Real shift = 1e-12;
+  // Below this relative residual the true Hessian is tried first: where it is positive
+  // definite the step is a full Newton step (the per-point projection, active wherever a
+  // point's tangent is indefinite, e.g. in compression, would make convergence linear).
+  Real true_tangent_below = 1e-3;
+};
+
+struct NewtonReport {
+  bool converged = false;
+  int iterations = 0;             // Newton steps taken (linear solves)
+  std::vector<Real> residual;     // relative residual ‖g_F‖/scale before each step and at the end
+  std::vector<Real> energy;       // E(u) at the same points, J
+  std::vector<Real> step;         // α of each step
+  int true_tangent_steps = 0;     // steps taken with the unprojected Hessian
+  int linear_iterations = 0;      // summed over the steps (CG; 1 per direct solve)
+  Real linear_residual = 0;       // relative residual of the last linear solve
+  Real min_jacobian = 1;          // smallest det F_p at the end
+  std::string failure;            // why it stopped without converging
+};
+
+// u: the start on entry (prescribed unknowns may differ from their values), the result on
+// return. Never evaluates the energy of an F with det F ≤ 0.
+NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichlet, Vector& u,
+                               SparseSolver& solver, const NewtonOptions& options = {});
+
+}  // namespace latmpm::statics

@@ -1,0 +1,89 @@
+#include "statics/sparse_solver.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <array>
+#include <utility>
+
+#include "core/errors.hpp"
+
+namespace latmpm::statics {
+
+namespace {
+const std::array<std::pair<LinearSolverKind, const char*>, 3> solver_names{{
+    {LinearSolverKind::ldlt, "ldlt"}, {LinearSolverKind::cg, "cg"}, {LinearSolverKind::cholmod, "cholmod"}}};
+}
+
+std::string to_string(LinearSolverKind kind) {
+  for (const auto& [k, n] : solver_names)
+    if (k == kind) return n;
+  return "?";
+}
+
+LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where, const std::string& field) {
+  for (const auto& [k, n] : solver_names)
+    if (name == n) return k;
+  throw InputError(where, field, "unknown value '" + name + "' (expected one of: ldlt, cg, cholmod)");
+}
+
+struct SparseSolver::Impl {
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<Real>> cg;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  bool analysed = false;
+  const SparseMatrix* matrix = nullptr;
+};
+
+SparseSolver::SparseSolver(LinearSolverKind kind, Real cg_tolerance, int cg_max_iterations)
+    : kind_(kind), impl_(std::make_unique<Impl>()) {
+  impl_->cg.setTolerance(cg_tolerance);
+  impl_->cg.setMaxIterations(cg_max_iterations);
+  impl_->cholmod.cholmod().print = 0;  // a non-positive-definite matrix is an answer, not a warning
+}
+
+SparseSolver::~SparseSolver() = default;
+
+bool SparseSolver::factorize(const SparseMatrix& K) {
+  Impl& s = *impl_;
+  s.matrix = &K;
+  switch (kind_) {
+    case LinearSolverKind::ldlt:
+      if (!s.analysed) s.ldlt.analyzePattern(K);
+      s.analysed = true;
+      s.ldlt.factorize(K);
+      return s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
+    case LinearSolverKind::cg:
+      s.cg.compute(K);  // the incomplete factorisation is redone for each matrix
+      return s.cg.info() == Eigen::Success;
+    case LinearSolverKind::cholmod:
+      if (!s.analysed) s.cholmod.analyzePattern(K);
+      s.analysed = true;
+      s.cholmod.factorize(K);
+      return s.cholmod.info() == Eigen::Success;
+  }
+  return false;
+}
+
+Vector SparseSolver::solve(const Vector& b, LinearSolveStats& stats) {
+  Impl& s = *impl_;
+  Vector x;
+  stats.iterations = 1;
+  switch (kind_) {
+    case LinearSolverKind::ldlt: x = s.ldlt.solve(b); break;
+    case LinearSolverKind::cholmod: x = s.cholmod.solve(b); break;
+    case LinearSolverKind::cg:
+      x = s.cg.solve(b);
+      stats.iterations = int(s.cg.iterations());
+      if (s.cg.info() != Eigen::Success)
+        throw NumericalError("static solve: conjugate gradients did not converge in " +
+                             std::to_string(s.cg.iterations()) + " iterations (relative residual " +
+                             std::to_string(s.cg.error()) + ")");
+      break;
+  }
+  const Real norm_b = b.norm();
+  stats.relative_residual = norm_b > 0 ? (*s.matrix * x - b).norm() / norm_b : Real(0);
+  return x;
+}
+
+}  // namespace latmpm::statics

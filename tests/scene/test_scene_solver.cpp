@@ -1,0 +1,62 @@
+// The [solver] table: explicit time stepping by default, the static solve with its keys,
+// and errors that name the file, the line and the key.
+#include <catch2/catch.hpp>
+
+#include "core/errors.hpp"
+#include "scene/scene.hpp"
+#include "scratch_points.hpp"
+
+using namespace latmpm;
+
+namespace {
+std::string scene_with(const std::string& solver, const std::string& end = "{ plate_displacement = \"1mm\" }") {
+  return "[run]\n"                                                             // 1
+         "end = " + end + "\n" +                                               // 2
+         "[grid]\n"                                                            // 3
+         "cell = \"1mm\"\n"                                                    // 4
+         "[[points]]\n"                                                        // 5
+         "file = \"pts.h5\"\n"                                                 // 6
+         "[bodies.column]\n"                                                   // 7
+         "role = \"deformable\"\n"                                             // 8
+         "material = { E = \"10MPa\", nu = 0.4, density = \"1050kg/m^3\" }\n"  // 9
+         "[bodies.plate]\n"                                                    // 10
+         "role = \"driven\"\n"                                                 // 11
+         "velocity = [\"0mm/s\", \"0mm/s\", \"-1mm/s\"]\n"                     // 12
+         "[solver]\n"                                                          // 13
+         + solver + "\n";                                                      // 14-
+}
+
+Scene parse(const std::string& text) {
+  static const std::string dir = test::scratch_points_dir("latmpm-solver-scene-");
+  return parse_scene(text, "scene.toml", dir);
+}
+}  // namespace
+
+TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static one", "[scene]") {
+  CHECK(parse(scene_with("")).solver.kind == SolverSpec::explicit_dynamics);
+  const Scene s = parse(scene_with("kind = \"static\"\nincrements = 8\nlinear_solver = \"ldlt\"\n"
+                                   "tolerance = 1e-9\ncheck_stability = false"));
+  CHECK(s.solver.kind == SolverSpec::static_equilibrium);
+  CHECK(s.solver.increments == 8);
+  CHECK(s.solver.linear_solver == "ldlt");
+  CHECK(s.solver.tolerance == 1e-9);
+  CHECK_FALSE(s.solver.check_stability);
+}
+
+TEST_CASE("Static solver errors name the line and the key", "[scene]") {
+  auto message = [](const std::string& text) {
+    try {
+      parse(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(message(scene_with("kind = \"static\"", "{ time = \"1ms\" }")),
+             Catch::Contains("scene.toml:14") && Catch::Contains("plate_displacement"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nincrements = 0")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("increments"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nlinear_solver = \"qr\"")),
+             Catch::Contains("linear_solver") && Catch::Contains("cholmod"));
+  CHECK_THAT(message(scene_with("kind = \"quasi\"")), Catch::Contains("kind"));
+}

@@ -1,0 +1,48 @@
+// Material points for the static-solver tests, built directly: a box of points on the
+// voxelizer's lattice, x = (i + (k + ½)/ppc)·h, each with volume (h/ppc)³ and GIMP
+// half-size h/(2 ppc), and the StaticProblem over them.
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "mpm/material.hpp"
+#include "statics/static_problem.hpp"
+
+namespace latmpm::statics::test {
+
+struct PointBlock {
+  std::vector<Vec3> position, half_size;
+  std::vector<Real> volume;
+};
+
+// Points filling the cell-aligned box [lo, hi) (m).
+inline PointBlock point_block(const Vec3& lo, const Vec3& hi, Real h, int ppc) {
+  PointBlock b;
+  const Real s = h / ppc;
+  const Eigen::Vector3i n = ((hi - lo) / s).array().round().cast<int>();
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        b.position.push_back(lo + s * Vec3(i + 0.5, j + 0.5, k + 0.5));
+        b.half_size.push_back(Vec3::Constant(s / 2));
+        b.volume.push_back(s * s * s);
+      }
+  return b;
+}
+
+inline mpm::MaterialParameters material(mpm::MaterialKind kind, Real young, Real poisson) {
+  mpm::MaterialParameters m;
+  m.kind = kind;
+  m.young_modulus = young;
+  m.poisson_ratio = poisson;
+  m.density = 1000;
+  return m;
+}
+
+inline StaticProblem make_problem(const PointBlock& b, Real h, mpm::ShapeFunctionKind shape,
+                                  const mpm::MaterialParameters& m) {
+  return StaticProblem(build_narrow_band(b.position, b.half_size, h, shape), b.volume,
+                       std::vector<uint16_t>(b.position.size(), 0), {ElasticEnergy::from(m)});
+}
+
+}  // namespace latmpm::statics::test
