@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/interruption.hpp"
 #include "post/report_rows.hpp"
 
 namespace latmpm::post {
@@ -19,13 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_text(const fs::path& out_dir, const std::string& relative, const std::string& text, ReportFiles& files) {
-  OutputFile out((out_dir / relative).string(), "-o");
-  {
-    std::ofstream stream(out.temp_path(), std::ios::binary);
-    stream << text;
-    if (!stream.flush()) throw InputError((out_dir / relative).string(), "", "cannot write");
-  }
-  out.commit();
+  write_file_atomically((out_dir / relative).string(), text, "-o");
   files.written.push_back(relative);
 }
 
@@ -115,9 +110,12 @@ ReportFiles write_post_report(const std::string& out_dir_text, const std::vector
     if (!gnuplot.available) continue;
     const std::string tag = ".tmp-" + std::to_string(::getpid());
     const std::string png = spec.name + ".png", svg = spec.name + ".svg";
-    const std::string problem = run_gnuplot((out_dir / "plots").string(), spec.name + ".gp", png + tag, svg + tag);
     const fs::path dir = out_dir / "plots";
-    if (problem.empty() && fs::is_regular_file(dir / (png + tag)) && fs::is_regular_file(dir / (svg + tag))) {
+    const int png_slot = register_temporary((dir / (png + tag)).string());
+    const int svg_slot = register_temporary((dir / (svg + tag)).string());
+    const std::string problem = run_gnuplot(dir.string(), spec.name + ".gp", png + tag, svg + tag);
+    // gnuplot can exit 0 after a failed write (a full disk): only complete plots are published.
+    if (problem.empty() && png_is_complete((dir / (png + tag)).string()) && svg_is_complete((dir / (svg + tag)).string())) {
       fs::rename(dir / (png + tag), dir / png);
       fs::rename(dir / (svg + tag), dir / svg);
       files.written.push_back("plots/" + png);
@@ -126,9 +124,11 @@ ReportFiles write_post_report(const std::string& out_dir_text, const std::vector
     } else {
       fs::remove(dir / (png + tag), error);
       fs::remove(dir / (svg + tag), error);
-      std::string first_line = problem.substr(0, problem.find_last_not_of("\n") + 1);
+      const std::string first_line = problem.empty() ? "incomplete PNG or SVG (disk full?)" : problem.substr(0, problem.find('\n'));
       files.warnings.push_back("gnuplot failed on plots/" + spec.name + ".gp: " + first_line);
     }
+    unregister_temporary(png_slot);
+    unregister_temporary(svg_slot);
   }
 
   // 4. The summary, last: it lists what the steps above wrote and what went wrong.

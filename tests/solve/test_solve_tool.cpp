@@ -14,6 +14,7 @@
 #include "run_output/snapshot_writer.hpp"
 #include "scene/scene.hpp"
 #include "tiny_column.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -22,8 +23,7 @@ namespace {
 
 fs::path scratch() {
   static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("latmpm-solve-test-" + std::to_string(::getpid()));
-    fs::create_directories(d);
+    const fs::path d = test::process_scratch("solve-tool").path();
     test::write_points(test::tiny_column({}), (d / "column.h5").string());
     return d;
   }();
