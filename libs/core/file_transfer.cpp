@@ -21,7 +21,8 @@ namespace latmpm {
 namespace {
 
 std::string make_temp_in(const std::string& dir, const std::string& stem) {
-  std::string pattern = (dir.empty() ? "." : dir) + "/." + stem + ".tmp.XXXXXX";
+  // A file name may have 255 bytes: a long target's staging name keeps the first 200 of them.
+  std::string pattern = (dir.empty() ? "." : dir) + "/." + stem.substr(0, 200) + ".tmp.XXXXXX";
   std::vector<char> buf(pattern.begin(), pattern.end());
   buf.push_back('\0');
   int fd = mkstemp(buf.data());

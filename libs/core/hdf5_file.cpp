@@ -157,6 +157,9 @@ std::vector<T> Hdf5File::read_numeric(const std::string& dataset, std::vector<si
   Handle type(H5Dget_type(set.id), H5Tclose);
   H5T_class_t cls = H5Tget_class(type.id);
   if (cls != H5T_INTEGER && cls != H5T_FLOAT) fail(dataset, "not a numeric dataset");
+  // Integers (indices, ids, flags) read from reals would be silently truncated: 0.5 -> 0.
+  if (cls == H5T_FLOAT && H5Tget_class(static_cast<hid_t>(mem_type)) == H5T_INTEGER)
+    fail(dataset, "stored as real numbers where integers are expected");
   std::vector<size_t> shape_out = shape(dataset);
   size_t count = 1;
   for (size_t d : shape_out) count *= d;

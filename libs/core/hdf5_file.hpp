@@ -40,7 +40,8 @@ class Hdf5File {
              const std::vector<size_t>& dims);
   void write_strings(const std::string& dataset, const std::vector<std::string>& data);
 
-  // Reads convert from the stored numeric type. `dims`, when given, receives the shape.
+  // Reads convert from the stored numeric type, except reals into integers (refused: an index
+  // stored as 0.5 is not an index). `dims`, when given, receives the shape.
   std::vector<double> read_doubles(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
   std::vector<float> read_floats(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
   std::vector<int32_t> read_int32(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;

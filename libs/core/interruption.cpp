@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -20,6 +21,14 @@ std::atomic<int> slot_state[slot_count];  // 0 free, 1 being written, 2 register
 volatile sig_atomic_t deferring = 0;
 volatile sig_atomic_t received = 0;
 volatile sig_atomic_t child_process = 0;
+char tool_name[64] = "latmpm";
+
+// The handler's one line, with write(2) only (async-signal-safe).
+void say_stopped(int signo) {
+  const char* name = signo == SIGINT ? "SIGINT" : signo == SIGTERM ? "SIGTERM" : signo == SIGHUP ? "SIGHUP" : "a signal";
+  for (const char* part : {static_cast<const char*>(tool_name), ": stopped by ", name, ", temporary files removed\n"})
+    if (::write(STDERR_FILENO, part, std::strlen(part)) < 0) return;
+}
 
 void remove_registered() {
   for (int i = 0; i < slot_count; ++i)
@@ -36,12 +45,14 @@ extern "C" void on_stop_signal(int signo) {
     ::waitpid(child_process, nullptr, 0);
   }
   remove_registered();
+  say_stopped(signo);
   ::_exit(128 + signo);
 }
 
 }  // namespace
 
-void install_signal_handlers() {
+void install_signal_handlers(const std::string& tool) {
+  std::snprintf(tool_name, sizeof tool_name, "%s", tool.c_str());
   struct sigaction action;
   std::memset(&action, 0, sizeof action);
   action.sa_handler = on_stop_signal;

@@ -13,7 +13,8 @@
 
 namespace latmpm {
 
-void install_signal_handlers();
+// `tool` names the tool in the one line the handler writes ("latmpm-x: stopped by SIGTERM").
+void install_signal_handlers(const std::string& tool);
 
 // Registers a temporary file for removal by the signal handler; returns a slot for
 // unregister_temporary (-1 when every slot is taken: the file is then only removed by its

@@ -40,7 +40,7 @@ int run_body(const std::string& tool, int argc, char** argv, const std::function
 
 int run_tool(const std::string& tool, int argc, char** argv,
              const std::function<int(int, char**)>& body) {
-  install_signal_handlers();
+  install_signal_handlers(tool);
   int status = run_body(tool, argc, argv, body);
   // What went to standard output (a summary, --help, a staged file) must have arrived: a full
   // disk or a closed pipe is an error, not a silent success.

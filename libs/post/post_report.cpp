@@ -111,24 +111,34 @@ ReportFiles write_post_report(const std::string& out_dir_text, const std::vector
     const std::string tag = ".tmp-" + std::to_string(::getpid());
     const std::string png = spec.name + ".png", svg = spec.name + ".svg";
     const fs::path dir = out_dir / "plots";
-    const int png_slot = register_temporary((dir / (png + tag)).string());
-    const int svg_slot = register_temporary((dir / (svg + tag)).string());
+    const fs::path png_tmp = dir / (png + tag), svg_tmp = dir / (svg + tag);
+    const int png_slot = register_temporary(png_tmp.string());
+    const int svg_slot = register_temporary(svg_tmp.string());
     const std::string problem = run_gnuplot(dir.string(), spec.name + ".gp", png + tag, svg + tag);
     // gnuplot can exit 0 after a failed write (a full disk): only complete plots are published.
-    if (problem.empty() && png_is_complete((dir / (png + tag)).string()) && svg_is_complete((dir / (svg + tag)).string())) {
-      fs::rename(dir / (png + tag), dir / png);
-      fs::rename(dir / (svg + tag), dir / svg);
-      files.written.push_back("plots/" + png);
-      files.written.push_back("plots/" + svg);
-      plotted.push_back(spec.name);
-    } else {
-      fs::remove(dir / (png + tag), error);
-      fs::remove(dir / (svg + tag), error);
-      const std::string first_line = problem.empty() ? "incomplete PNG or SVG (disk full?)" : problem.substr(0, problem.find('\n'));
-      files.warnings.push_back("gnuplot failed on plots/" + spec.name + ".gp: " + first_line);
+    const bool complete = problem.empty() && png_is_complete(png_tmp.string()) && svg_is_complete(svg_tmp.string());
+    std::error_code rename_error;
+    if (complete) {
+      fs::rename(png_tmp, dir / png, rename_error);
+      if (!rename_error) fs::rename(svg_tmp, dir / svg, rename_error);
+    }
+    if (!complete || rename_error) {
+      fs::remove(png_tmp, error);
+      fs::remove(svg_tmp, error);
     }
     unregister_temporary(png_slot);
     unregister_temporary(svg_slot);
+    if (rename_error) throw OutputError((dir / png).string(), "cannot rename the plot into place: " + rename_error.message());
+    if (complete) {
+      files.written.push_back("plots/" + png);
+      files.written.push_back("plots/" + svg);
+      plotted.push_back(spec.name);
+    } else if (problem.empty()) {
+      // gnuplot reported nothing but left a file cut short: the disk is full, not the plot wrong.
+      throw OutputError((dir / png).string(), "gnuplot could not finish the plot (disk full?)");
+    } else {
+      files.warnings.push_back("gnuplot failed on plots/" + spec.name + ".gp: " + problem.substr(0, problem.find('\n')));
+    }
   }
 
   // 4. The summary, last: it lists what the steps above wrote and what went wrong.

@@ -47,7 +47,7 @@ TEST_CASE("SIGTERM and SIGINT remove the staging files and exit with 128 + the s
   const int signo = GENERATE(SIGTERM, SIGINT, SIGHUP);
   const std::string target = scratch / "out.h5";
   const int status = in_child([&] {
-    install_signal_handlers();
+    install_signal_handlers("test");
     OutputFile out(target, "-o");
     std::ofstream(out.temp_path()) << "half written";
     ::raise(signo);
@@ -60,7 +60,7 @@ TEST_CASE("SIGTERM and SIGINT remove the staging files and exit with 128 + the s
 TEST_CASE("A deferring run sees the signal between steps; a second signal ends it at once", "[core][signals]") {
   const test::ScratchDir scratch("interruption");
   const int status = in_child([&] {
-    install_signal_handlers();
+    install_signal_handlers("test");
     const InterruptionDeferral defer;
     ::raise(SIGTERM);
     if (interruption_signal() != SIGTERM) return 1;

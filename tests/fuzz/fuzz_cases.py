@@ -35,6 +35,7 @@ class BaseInputs:
         self.root, self.bin, self.source, self.env = root, bin_dir, source, env
         self.run_tool("latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o col.h5 --quiet")
         self.run_tool("latmpm-voxelize col.h5 --cell 0.8mm --ppc 2 -o col-points.h5 --quiet")
+        self.run_tool("latmpm-lattice --preset T2P30 -o t2p30.h5 --quiet")
         self.run_tool("latmpm-lattice --cell bcc --strut-length 4mm --strut-diameter 1mm --cells 2x2x2 "
                       "--plates 1mm -o bcc.h5 --quiet")
         write(os.path.join(root, "cube.stl"), ascii_stl(cube_triangles(10.0)))
@@ -207,8 +208,10 @@ def number_cases(inputs):
                   [("--plateau-strain", v) for v in ["0.3:0.2", "-1:0.5", "0.2:1", "nan:0.3", "a:b", "0.2:1e999"]] + \
                   [("--load", v) for v in ["nonexistent", "", "time"]] + [("--kind", v) for v in ["x", ""]]
     for option, value in post_values:
+        # An empty value is the option's default ("not given"), as for every tool.
         cases.append(Case("numbers", "post %s %r" % (option, value),
-                          ["latmpm-post", "run", "-o", "out", option, value], REFUSED,
+                          ["latmpm-post", "run", "-o", "out", option, value], REFUSED | ({0} if value == "" else set()),
+                          allowed_outputs=["out"] if value == "" else [],
                           setup=inputs.copy("run"), subset=option == "--euler-k" and value == "nan"))
     imperfect_values = [("--amount", v) for v in ["nanmm", "1e999mm", "-1mm", "1", "infmm"]] + \
                        [("--direction", v) for v in ["z", "nan deg", "1e999deg", ""]] + \
@@ -276,7 +279,7 @@ def stl_cases(inputs):
     for name, data in bad.items():
         expect = BAD_INPUT
         if name in ("a coordinate 1e-999", "inside out", "two cubes overlapping", "binary, header 'solid'",
-                    "a line of 1 MB"):
+                    "a line of 1 MB", "four vertices in a loop"):  # a polygon loop is fanned into triangles
             expect = {0, 2}  # readable: done or refused with a reason, never wrong silently
         cases.append(Case("stl", "voxelize STL with " + name,
                           ["latmpm-voxelize", "part.stl", "--units", "mm", "--cell", "1mm", "-o", "p.h5", "--quiet"],
@@ -550,6 +553,16 @@ def hostile_name_cases(inputs):
 # ----------------------------------------------------------------------------------------------
 # 4. Faults: a full disk, signals, broken pipes, outputs naming one file.
 
+def series_rows(run, lines):
+    def trigger(case_dir):
+        try:
+            with open(os.path.join(case_dir, run, "series.csv")) as f:
+                return sum(1 for _ in f) >= lines
+        except OSError:
+            return False
+    return trigger
+
+
 def log_exists(run):
     return lambda case_dir: os.path.exists(os.path.join(case_dir, run, "log.txt"))
 
@@ -594,9 +607,9 @@ def fault_cases(inputs):
         ("voxelize", ["latmpm-voxelize", "col.h5", "--cell", "0.4mm", "-o", "p.h5", "--quiet"], 8, "col.h5"),
         ("voxelize STL", ["latmpm-voxelize", "cube.stl", "--units", "mm", "--cell", "1mm", "-o", "p.h5", "--quiet"],
          8, "cube.stl"),
-        ("imperfect", ["latmpm-imperfect", "col-points.h5", "--type", "C", "-o", "o.h5", "--quiet"], 8,
-         "col-points.h5"),
-        ("solve", ["latmpm-solve", "long.toml", "-o", "run", "--quiet"], 64, "long.toml"),
+        ("imperfect", ["latmpm-imperfect", "col-points.h5", "--type", "sine", "--amount", "0.1mm", "-o", "o.h5",
+                       "--quiet"], 8, "col-points.h5"),
+        ("solve", ["latmpm-solve", "long.toml", "-o", "run", "--quiet"], 24, "long.toml"),
         ("solve --resume", ["latmpm-solve", "--resume", "ckpt", "--quiet"], 40, "ckpt"),
         ("post", ["latmpm-post", "run", "-o", "out"], 12, "run"),
     ]
@@ -608,7 +621,7 @@ def fault_cases(inputs):
     cases.append(Case("disk-full", "lattice -o - to /dev/full", " ".join(column) + " -o - --quiet > /dev/full",
                       OUTPUT_FAILED, subset=True))
     cases.append(Case("disk-full", "imperfect -o - to /dev/full",
-                      "latmpm-imperfect col-points.h5 --type C -o - --quiet > /dev/full", OUTPUT_FAILED,
+                      "latmpm-imperfect col-points.h5 --type sine --amount 0.1mm -o - --quiet > /dev/full", OUTPUT_FAILED,
                       setup=inputs.copy("col-points.h5")))
     cases.append(Case("disk-full", "solve --check to /dev/full", "latmpm-solve scene.toml --check > /dev/full",
                       OUTPUT_FAILED, setup=inputs.copy("scene.toml")))
@@ -624,16 +637,16 @@ def fault_cases(inputs):
                           timeout=120))
         cases.append(Case("signals", "resumed solve stopped again by %s" % signo.name,
                           ["latmpm-solve", "--resume", "ckpt", "--quiet", "--threads", "1"], {128 + signo},
-                          setup=inputs.copy("ckpt"), send_signal=(signo, after(0.3)),
+                          setup=inputs.copy("ckpt"), send_signal=(signo, series_rows("ckpt", 12)),
                           verify=resumes_identically(inputs, "ckpt"), timeout=120))
         for name, cmd, needs in [
             ("lattice --stl", column + ["--stl", "out.stl", "--voxel", "0.02mm", "-o", "o.h5", "--quiet"], None),
             ("voxelize", ["latmpm-voxelize", "col.h5", "--cell", "0.05mm", "-o", "p.h5", "--quiet"], "col.h5"),
-            ("imperfect", ["latmpm-imperfect", "bcc.h5", "--waviness", "2%", "--waviness-segments", "64",
-                           "-o", "o.h5", "--quiet"], "bcc.h5"),
+            ("imperfect", ["latmpm-imperfect", "t2p30.h5", "--waviness", "2%", "--waviness-segments", "64",
+                           "-o", "o.h5", "--quiet"], "t2p30.h5"),
             ("voxelize from stdin", "latmpm-voxelize - --cell 0.05mm -o p.h5 --quiet < col.h5", "col.h5"),
         ]:
-            for delay in (0.0, 0.4):
+            for delay in (0.0, 0.2):
                 cases.append(Case("signals", "%s stopped by %s after %g s" % (name, signo.name, delay), cmd,
                                   {128 + signo, 0}, setup=inputs.copy(needs) if needs else None,
                                   send_signal=(signo, after(delay)), signal_group=isinstance(cmd, str),
@@ -649,7 +662,8 @@ def fault_cases(inputs):
         ("lattice", column + ["-o", "-", "--quiet"], None),
         ("lattice --stl", column + ["--stl", "-", "--quiet"], None),
         ("voxelize", ["latmpm-voxelize", "col.h5", "--cell", "0.4mm", "-o", "-", "--quiet"], "col.h5"),
-        ("imperfect", ["latmpm-imperfect", "col-points.h5", "--type", "C", "-o", "-", "--quiet"], "col-points.h5"),
+        ("imperfect", ["latmpm-imperfect", "col-points.h5", "--type", "sine", "--amount", "0.1mm", "-o", "-",
+                       "--quiet"], "col-points.h5"),
         ("solve --check", ["latmpm-solve", "scene.toml", "--check"], "scene.toml"),
     ]:
         cases.append(Case("broken-pipe", name + " -o - | head -c 10", cmd, {0, 5}, head_bytes=10,
@@ -677,6 +691,20 @@ def fault_cases(inputs):
                       ["latmpm-voxelize", "col.h5", "--cell", "0.8mm", "-o", "p.xmf", "--quiet"], BAD_INPUT,
                       setup=inputs.copy("col.h5")))
     return cases
+
+
+# Cases that fail on this branch because of a fix owned by another branch of issue 20
+# (name -> where it is fixed). run_fuzz.py reports them apart, the ctest subset leaves them
+# out; remove an entry when its fix is merged.
+KNOWN = {
+    "voxelize --cell '1e-300mm'": "parts: fine cells (OpenVDB in millimetres, a stated limit)",
+    "voxelize STL --voxel '1e-300mm'": "parts: fine cells",
+    "voxelize STL --scale '1e30'": "parts: extents checked before allocation (resource_estimate)",
+    "voxelize STL with a coordinate 1e999": "parts: out-of-range STL numbers are errors",
+    "voxelize STL with a coordinate -1e999": "parts: out-of-range STL numbers are errors",
+    "voxelize STL with coordinates 1e30": "parts: extents checked before allocation (resource_estimate)",
+    "voxelize a strut graph with node at 1e30": "parts: extents checked before allocation (resource_estimate)",
+}
 
 
 def all_cases(inputs):
