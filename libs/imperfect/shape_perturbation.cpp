@@ -259,8 +259,12 @@ std::vector<Eigen::Vector3d> shape_displacements(const PointSet& points, const S
 ShapeResult apply_shape_perturbation(PointSet& points, const ShapePerturbation& p, const std::string& where) {
   ShapeResult r;
   const auto u = shape_displacements(points, p, where, &r);
-  for (size_t i = 0; i < points.size(); ++i)
-    if (u[i] != Eigen::Vector3d::Zero()) points.position[i] += u[i];
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (u[i] == Eigen::Vector3d::Zero()) continue;
+    points.position[i] += u[i];
+    if (!points.domain_vertices.empty())  // a CPDI1 domain moves with its point
+      for (auto& v : points.domain_vertices[i]) v += u[i];
+  }
   return r;
 }
 

@@ -17,6 +17,14 @@ void PointSet::validate(const std::string& where) const {
   if (volume.size() != n) throw InputError(where, "/points/volume", "length differs from /points/position");
   if (body.size() != n) throw InputError(where, "/points/body", "length differs from /points/position");
   if (half_size.size() != n) throw InputError(where, "/points/half_size", "length differs from /points/position");
+  if (!domain_vertices.empty() && domain_vertices.size() != n)
+    throw InputError(where, "/points/domain_vertices", "length differs from /points/position");
+  for (size_t i = 0; i < domain_vertices.size(); ++i) {
+    for (const auto& v : domain_vertices[i])
+      if (!v.allFinite()) throw InputError(where, "/points/domain_vertices", "point " + std::to_string(i) + " is not finite");
+    if (!(hex_integrals(domain_vertices[i]).min_jacobian > 0))
+      throw InputError(where, "/points/domain_vertices", "point " + std::to_string(i) + " has an inverted hexahedron");
+  }
   for (const auto& [name, mask] : tags)
     if (mask.size() != n) throw InputError(where, "/points/tags/" + name, "length differs from /points/position");
   if (!(cell_size > 0) || !std::isfinite(cell_size)) throw InputError(where, "/points@cell_size", "must be positive");

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "points/hexahedron.hpp"
+
 namespace latmpm {
 
 struct PointSet {
@@ -19,6 +21,10 @@ struct PointSet {
   std::vector<double> volume;              // m³ (surface points carry their inside fraction)
   std::vector<int32_t> body;               // index into body_names
   std::vector<Eigen::Vector3d> half_size;  // m, GIMP particle-domain half-lengths
+  // CPDI1 domains (paper B Sec. 2.2): the eight vertices of each point's hexahedron in the
+  // reference configuration, gmsh order, m. Empty for sets without them (voxelized sets);
+  // position is then each domain's centroid and volume its exact volume.
+  std::vector<HexVertices> domain_vertices;
   std::vector<std::string> body_names;     // "lattice", "bottom_plate", "top_plate", "column"...
   // Regions scenes need, one 0/1 mask per point: "record" (bottom layer of the base, the
   // paper's reaction measure), "top_layer", "bottom_layer"...

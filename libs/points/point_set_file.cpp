@@ -39,6 +39,13 @@ void write_point_set(Hdf5File& file, const PointSet& p) {
   file.write("/points/volume", p.volume, {n});
   file.write("/points/body", p.body, {n});
   file.write("/points/half_size", flatten(p.half_size), {n, 3});
+  if (!p.domain_vertices.empty()) {
+    std::vector<double> flat;
+    flat.reserve(24 * n);
+    for (const auto& hex : p.domain_vertices)
+      for (const auto& v : hex) flat.insert(flat.end(), {v.x(), v.y(), v.z()});
+    file.write("/points/domain_vertices", flat, {n, 8, 3});
+  }
   file.write_strings("/points/body_names", p.body_names);
   std::vector<std::string> tag_names;
   for (const auto& [name, mask] : p.tags) {
@@ -65,6 +72,16 @@ PointSet read_point_set(const Hdf5File& file) {
   p.body = file.read_int32("/points/body");
   p.half_size = unflatten(file, "/points/half_size");
   p.body_names = file.read_strings("/points/body_names");
+  if (file.exists("/points/domain_vertices")) {  // optional: CPDI1 hexahedra (latmpm-hexmesh)
+    std::vector<size_t> dims;
+    const auto flat = file.read_doubles("/points/domain_vertices", &dims);
+    if (dims.size() != 3 || dims[1] != 8 || dims[2] != 3)
+      throw InputError(file.path(), "/points/domain_vertices", "expected an N×8×3 array");
+    p.domain_vertices.resize(dims[0]);
+    for (size_t i = 0; i < dims[0]; ++i)
+      for (size_t a = 0; a < 8; ++a)
+        p.domain_vertices[i][a] = {flat[24 * i + 3 * a], flat[24 * i + 3 * a + 1], flat[24 * i + 3 * a + 2]};
+  }
   for (const auto& name : file.read_strings("/points/tag_names"))
     p.tags[name] = file.read_uint8("/points/tags/" + name);
   if (file.exists("/points/parameters/keys")) {
