@@ -23,10 +23,10 @@ volatile sig_atomic_t received = 0;
 volatile sig_atomic_t child_process = 0;
 char tool_name[64] = "latmpm";
 
-// The handler's one line, with write(2) only (async-signal-safe).
+// The handler's one line, with write(2) only (async-signal-safe; signal_name returns literals).
 void say_stopped(int signo) {
-  const char* name = signo == SIGINT ? "SIGINT" : signo == SIGTERM ? "SIGTERM" : signo == SIGHUP ? "SIGHUP" : "a signal";
-  for (const char* part : {static_cast<const char*>(tool_name), ": stopped by ", name, ", temporary files removed\n"})
+  for (const char* part : {static_cast<const char*>(tool_name), ": stopped by ", signal_name(signo),
+                           ", temporary files removed\n"})
     if (::write(STDERR_FILENO, part, std::strlen(part)) < 0) return;
 }
 
@@ -90,6 +90,11 @@ const char* signal_name(int signo) {
     case SIGHUP: return "SIGHUP";
     default: return "a signal";
   }
+}
+
+TemporaryPath::~TemporaryPath() {
+  ::unlink(path_.c_str());  // gone already when it was moved into place
+  unregister_temporary(slot_);
 }
 
 InterruptionDeferral::InterruptionDeferral() { deferring = 1; }

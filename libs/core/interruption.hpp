@@ -10,6 +10,7 @@
 // when it starts (remove_stale_temporaries).
 #pragma once
 #include <string>
+#include <utility>
 
 namespace latmpm {
 
@@ -21,6 +22,22 @@ void install_signal_handlers(const std::string& tool);
 // owner's destructor).
 int register_temporary(const std::string& path);
 void unregister_temporary(int slot);
+
+// A file another library writes under a name of its choosing (gmsh picks the format by the
+// extension): registered for the signal handler and removed when the guard goes, unless
+// the file was moved into place first.
+class TemporaryPath {
+ public:
+  explicit TemporaryPath(std::string path) : path_(std::move(path)), slot_(register_temporary(path_)) {}
+  ~TemporaryPath();
+  TemporaryPath(const TemporaryPath&) = delete;
+  TemporaryPath& operator=(const TemporaryPath&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int slot_;
+};
 
 // A child process writing registered temporaries (gnuplot): the handler kills and reaps it
 // before removing them, so it cannot create one afterwards. 0: none.

@@ -33,6 +33,9 @@ int run_body(const std::string& tool, int argc, char** argv, const std::function
   } catch (const std::exception& e) {
     std::cerr << tool << ": internal error: " << e.what() << "\n";
     return exit_internal;
+  } catch (...) {  // a library throwing something else (gmsh throws std::string): still one line
+    std::cerr << tool << ": internal error: an exception of unknown type\n";
+    return exit_internal;
   }
 }
 

@@ -83,10 +83,15 @@ void require_positive(double value, const char* field) {
 }
 
 void mesh_and_collect(HexMesh& out, const std::string& msh_path) {
-  gmsh::model::geo::synchronize();
-  gmsh::model::mesh::generate(3);
-  if (!msh_path.empty()) gmsh::write(msh_path);
-  out = collect_hexahedra("generated mesh", 1);
+  // gmsh throws std::string as well as std::exception (e.g. a cylinder of 1e-300 m).
+  try {
+    gmsh::model::geo::synchronize();
+    gmsh::model::mesh::generate(3);
+    if (!msh_path.empty()) gmsh::write(msh_path);
+    out = collect_hexahedra("generated mesh", 1);
+  } catch (const std::string& e) {
+    throw InputError("hex mesh", "", "gmsh cannot mesh the cylinder: " + e);
+  }
 }
 
 }  // namespace
@@ -170,12 +175,19 @@ HexMesh box_hex_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const
 HexMesh read_hex_mesh(const std::string& path, double metres_per_unit) {
   require_positive(metres_per_unit, "units");
   GmshMeshSession session;
+  // gmsh throws std::string as well as std::exception (a truncated file): either is bad input.
   try {
     gmsh::open(path);
+    return collect_hexahedra(path, metres_per_unit);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path, "", std::string("gmsh cannot read it: ") + e.what());
+  } catch (const std::string& e) {
+    throw InputError(path, "", "gmsh cannot read it: " + e);
+  } catch (...) {
+    throw InputError(path, "", "gmsh cannot read it");
   }
-  return collect_hexahedra(path, metres_per_unit);
 }
 
 double hex_mesh_volume(const HexMesh& mesh) {

@@ -36,6 +36,8 @@ class BaseInputs:
         self.run_tool("latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o col.h5 --quiet")
         self.run_tool("latmpm-voxelize col.h5 --cell 0.8mm --ppc 2 -o col-points.h5 --quiet")
         self.run_tool("latmpm-lattice --preset T2P30 -o t2p30.h5 --quiet")
+        self.run_tool("latmpm-hexmesh --cylinder --diameter 4mm --height 4mm --level 1 --cell 0.4mm --msh b1.msh "
+                      "-o b1.h5 --quiet")
         self.run_tool("latmpm-lattice --cell bcc --strut-length 4mm --strut-diameter 1mm --cells 2x2x2 "
                       "--plates 1mm -o bcc.h5 --quiet")
         write(os.path.join(root, "cube.stl"), ascii_stl(cube_triangles(10.0)))
@@ -48,6 +50,10 @@ class BaseInputs:
         self.run_tool("latmpm-solve scene.toml -o run --quiet --threads 1")
         self.run_tool("latmpm-solve long.toml -o long-run --quiet --threads 1")
         self.run_tool("latmpm-solve long.toml -o ckpt --set run.max_steps=120 --quiet --threads 1")
+        # A run three times longer, whole and checkpointed early: a resumed run long enough to stop.
+        write(self.path("longer.toml"), self.long_scene.replace('plate_displacement = "1mm"', 'plate_displacement = "3mm"'))
+        self.run_tool("latmpm-solve longer.toml -o longer-run --quiet --threads 1")
+        self.run_tool("latmpm-solve longer.toml -o longer-ckpt --set run.max_steps=120 --quiet --threads 1")
 
     def path(self, name):
         return os.path.join(self.root, name)
@@ -121,7 +127,8 @@ BAD_LENGTHS = ["1e999mm", "-1mm", "0mm", "nanmm", "nan mm", "inf mm", "-inf mm",
 
 def usage_cases():
     cases = []
-    for tool in ["latmpm-lattice", "latmpm-voxelize", "latmpm-solve", "latmpm-post", "latmpm-imperfect"]:
+    for tool in ["latmpm-lattice", "latmpm-voxelize", "latmpm-solve", "latmpm-post", "latmpm-imperfect",
+                 "latmpm-hexmesh"]:
         cases.append(Case("usage", tool + " with no arguments", [tool], {1}, subset=True))
         cases.append(Case("usage", tool + " with an unknown option", [tool, "--strut-diamter", "1mm"], {1}))
         cases.append(Case("usage", tool + " with an option missing its value", [tool, "-o"], {1}))
@@ -471,7 +478,7 @@ def checkpoint_cases(inputs):
     cases = []
     for name, edit in edits:
         cases.append(Case("checkpoint", "resume from a checkpoint with " + name,
-                          ["latmpm-solve", "--resume", "ckpt", "--quiet", "--threads", "1"], BAD_INPUT,
+                          ["latmpm-solve", "--resume", "ckpt", "--set", "run.max_steps=0", "--quiet", "--threads", "1"], BAD_INPUT,
                           setup=inputs.corrupt("ckpt", *edit),
                           subset=name in ("a body index out of range", "a bucket range past the particles",
                                           "a NaN step", "velocities a few rows short"), timeout=120))
@@ -482,7 +489,7 @@ def checkpoint_cases(inputs):
             content = open(path, "rb").read()
             write(path, content[: len(content) // 3] if data is None else data)
         cases.append(Case("checkpoint", "resume from a checkpoint that is " + name,
-                          ["latmpm-solve", "--resume", "ckpt", "--quiet"], BAD_INPUT, setup=setup))
+                          ["latmpm-solve", "--resume", "ckpt", "--set", "run.max_steps=0", "--quiet"], BAD_INPUT, setup=setup))
     return cases
 
 
@@ -554,6 +561,7 @@ def hostile_name_cases(inputs):
 # 4. Faults: a full disk, signals, broken pipes, outputs naming one file.
 
 def series_rows(run, lines):
+    """True once RUN/series.csv has `lines` lines: the run is stepping."""
     def trigger(case_dir):
         try:
             with open(os.path.join(case_dir, run, "series.csv")) as f:
@@ -578,19 +586,20 @@ def after(seconds):
     return trigger
 
 
-def resumes_identically(inputs, run):
+def resumes_identically(inputs, run, reference="long-run"):
     """After an interruption: the checkpoint is there and --resume ends with the series of a
     run that never stopped (byte for byte)."""
     def verify(case_dir, status, out, err):
         run_dir = os.path.join(case_dir, run)
         if not os.path.exists(os.path.join(run_dir, "checkpoint.h5")):
             return "no checkpoint after the signal"
-        r = subprocess.run(["latmpm-solve", "--resume", run, "--quiet", "--threads", "1"], cwd=case_dir,
+        r = subprocess.run(["latmpm-solve", "--resume", run, "--set", "run.max_steps=0", "--quiet", "--threads", "1"],
+                           cwd=case_dir,
                            env=inputs.env, capture_output=True)
         if r.returncode != 0:
             return "--resume failed: " + r.stderr.decode()[:200]
         for name in ("series.csv", "snapshots.xmf"):
-            if open(os.path.join(run_dir, name), "rb").read() != open(os.path.join(inputs.path("long-run"), name),
+            if open(os.path.join(run_dir, name), "rb").read() != open(os.path.join(inputs.path(reference), name),
                                                                        "rb").read():
                 return name + " differs from the uninterrupted run's"
         return None
@@ -610,7 +619,7 @@ def fault_cases(inputs):
         ("imperfect", ["latmpm-imperfect", "col-points.h5", "--type", "sine", "--amount", "0.1mm", "-o", "o.h5",
                        "--quiet"], 8, "col-points.h5"),
         ("solve", ["latmpm-solve", "long.toml", "-o", "run", "--quiet"], 24, "long.toml"),
-        ("solve --resume", ["latmpm-solve", "--resume", "ckpt", "--quiet"], 40, "ckpt"),
+        ("solve --resume", ["latmpm-solve", "--resume", "ckpt", "--set", "run.max_steps=0", "--quiet"], 40, "ckpt"),
         ("post", ["latmpm-post", "run", "-o", "out"], 12, "run"),
     ]
     for name, cmd, kb, needs in full:
@@ -630,23 +639,24 @@ def fault_cases(inputs):
                       setup=inputs.copy("col.h5")))
 
     for signo in (signal.SIGTERM, signal.SIGINT):
-        cases.append(Case("signals", "solve stopped by %s resumes identically" % signo.name,
-                          ["latmpm-solve", "long.toml", "-o", "run", "--quiet", "--threads", "1"], {128 + signo},
-                          setup=inputs.copy("long.toml"), send_signal=(signo, log_exists("run")),
-                          allowed_outputs=["run"], verify=resumes_identically(inputs, "run"), subset=True,
-                          timeout=120))
+        for when, trigger in [("before its first step", log_exists("run")), ("mid-run", series_rows("run", 4))]:
+            cases.append(Case("signals", "solve stopped by %s %s resumes identically" % (signo.name, when),
+                              ["latmpm-solve", "long.toml", "-o", "run", "--quiet", "--threads", "1"], {128 + signo},
+                              setup=inputs.copy("long.toml"), send_signal=(signo, trigger), allowed_outputs=["run"],
+                              verify=resumes_identically(inputs, "run"), subset=when == "mid-run", timeout=120))
         cases.append(Case("signals", "resumed solve stopped again by %s" % signo.name,
-                          ["latmpm-solve", "--resume", "ckpt", "--quiet", "--threads", "1"], {128 + signo},
-                          setup=inputs.copy("ckpt"), send_signal=(signo, series_rows("ckpt", 12)),
-                          verify=resumes_identically(inputs, "ckpt"), timeout=120))
+                          ["latmpm-solve", "--resume", "longer-ckpt", "--set", "run.max_steps=0", "--quiet",
+                           "--threads", "1"], {128 + signo},
+                          setup=inputs.copy("longer-ckpt"), send_signal=(signo, series_rows("longer-ckpt", 12)),
+                          verify=resumes_identically(inputs, "longer-ckpt", "longer-run"), timeout=120))
         for name, cmd, needs in [
             ("lattice --stl", column + ["--stl", "out.stl", "--voxel", "0.02mm", "-o", "o.h5", "--quiet"], None),
-            ("voxelize", ["latmpm-voxelize", "col.h5", "--cell", "0.05mm", "-o", "p.h5", "--quiet"], "col.h5"),
+            ("voxelize", ["latmpm-voxelize", "col.h5", "--cell", "0.1mm", "-o", "p.h5", "--quiet"], "col.h5"),
             ("imperfect", ["latmpm-imperfect", "t2p30.h5", "--waviness", "2%", "--waviness-segments", "64",
                            "-o", "o.h5", "--quiet"], "t2p30.h5"),
-            ("voxelize from stdin", "latmpm-voxelize - --cell 0.05mm -o p.h5 --quiet < col.h5", "col.h5"),
+            ("voxelize from stdin", "latmpm-voxelize - --cell 0.1mm -o p.h5 --quiet < col.h5", "col.h5"),
         ]:
-            for delay in (0.0, 0.2):
+            for delay in (0.0, 0.05 if name == "imperfect" else 0.3):
                 cases.append(Case("signals", "%s stopped by %s after %g s" % (name, signo.name, delay), cmd,
                                   {128 + signo, 0}, setup=inputs.copy(needs) if needs else None,
                                   send_signal=(signo, after(delay)), signal_group=isinstance(cmd, str),
@@ -707,6 +717,60 @@ KNOWN = {
 }
 
 
+def hexmesh_cases(inputs):
+    """latmpm-hexmesh (paper B's cylinders and gmsh .msh files of hexahedra)."""
+    cases = []
+    cylinder = ["latmpm-hexmesh", "--cylinder", "--cell", "0.4mm", "-o", "x.h5", "--quiet"]
+    for option, values in [("--diameter", BAD_LENGTHS), ("--height", BAD_LENGTHS),
+                           ("--level", ["0", "-1", "13", "1e9", "x", "1.5"]),
+                           ("--divisions", ["0,1,1", "401,1,1", "a,b,c", "1,1", "1,1,1,1", "-1,2,2"])]:
+        for value in values:
+            args = {"--diameter": "4mm", "--height": "4mm", "--level": "1"}
+            if option == "--divisions":
+                del args["--level"]
+            args[option] = value
+            cmd = list(cylinder)
+            for k, v in args.items():
+                cmd += [k, v]
+            absurd = value in ("1e-300mm", "1e30mm")
+            cases.append(Case("numbers", "hexmesh %s %r" % (option, value), cmd, REFUSED | ({0} if absurd else set()),
+                              subset=value == "nanmm", timeout=120))
+    for value in ["0mm", "-1mm", "nanmm", "1e999mm", "1e-300mm"]:
+        cases.append(Case("numbers", "hexmesh --cell %r" % value, cylinder[:2] + ["--diameter", "4mm", "--height", "4mm",
+                          "--level", "1", "--cell", value, "-o", "x.h5", "--quiet"],
+                          REFUSED | ({0} if value == "1e-300mm" else set())))
+    text = open(inputs.path("b1.msh")).read()
+    nodes = text.index("$Nodes")
+    bad = {
+        "empty": "", "not a mesh": "hello\n", "truncated": text[: len(text) // 2],
+        "no $EndNodes": text.replace("$EndNodes", ""),
+        "a NaN coordinate": text[:nodes] + text[nodes:].replace("\n0 ", "\nnan ", 1),
+        "a 1e999 coordinate": text[:nodes] + text[nodes:].replace("\n0 ", "\n1e999 ", 1),
+        "a node count of 10^12": text.replace("$Nodes\n", "$Nodes\n1000000000000 ", 1),
+        "version 1": text.replace("4.1 0 8", "1.0 0 8", 1),
+        "binary flag": text.replace("4.1 0 8", "4.1 1 8", 1),
+    }
+    for name, data in bad.items():
+        cases.append(Case("msh", "hexmesh reads a .msh: " + name,
+                          ["latmpm-hexmesh", "in.msh", "--units", "mm", "--cell", "0.4mm", "-o", "x.h5", "--quiet"],
+                          BAD_INPUT, setup=writes("in.msh", data), subset=name == "truncated"))
+    cases.append(Case("aliasing", "hexmesh -o and --msh the same", cylinder + ["--diameter", "4mm", "--height", "4mm",
+                      "--level", "1", "--msh", "./x.h5"], BAD_INPUT))
+    cases.append(Case("aliasing", "hexmesh -o naming its own XDMF view", ["latmpm-hexmesh", "--cylinder", "--cell",
+                      "0.4mm", "--diameter", "4mm", "--height", "4mm", "--level", "1", "-o", "x.xmf", "--quiet"],
+                      BAD_INPUT))
+    cases.append(Case("disk-full", "a full disk under hexmesh", cylinder + ["--diameter", "4mm", "--height", "4mm",
+                      "--level", "2", "--msh", "m.msh"], OUTPUT_FAILED, fsize_kb=8))
+    for signo in (signal.SIGTERM, signal.SIGINT):
+        cases.append(Case("signals", "hexmesh stopped by %s" % signo.name,
+                          cylinder + ["--diameter", "4mm", "--height", "4mm", "--level", "8", "--msh", "m.msh"],
+                          {128 + signo, 0}, send_signal=(signo, after(0.3)), timeout=120))
+    cases.append(Case("broken-pipe", "hexmesh -o - | head -c 10", ["latmpm-hexmesh", "--cylinder", "--cell", "0.4mm",
+                      "--diameter", "4mm", "--height", "4mm", "--level", "2", "-o", "-", "--quiet"], {0, 5},
+                      head_bytes=10))
+    return cases
+
+
 def all_cases(inputs):
     return (usage_cases() + number_cases(inputs) + stl_cases(inputs) + hdf5_cases(inputs) + scene_cases(inputs) +
-            checkpoint_cases(inputs) + hostile_name_cases(inputs) + fault_cases(inputs))
+            checkpoint_cases(inputs) + hostile_name_cases(inputs) + fault_cases(inputs) + hexmesh_cases(inputs))

@@ -26,6 +26,12 @@ const char* const hostile[] = {
     "h @png_file",
 };
 
+// install-deps.sh installs gnuplot; without it latmpm-post only loses the plots.
+bool gnuplot_installed(const GnuplotInfo& gnuplot) {
+  if (!gnuplot.available) WARN("gnuplot is not installed");
+  return gnuplot.available;
+}
+
 }  // namespace
 
 TEST_CASE("gnuplot strings are single-quoted with quotes doubled and control characters shown", "[post][plot]") {
@@ -40,10 +46,7 @@ TEST_CASE("gnuplot strings are single-quoted with quotes doubled and control cha
 
 TEST_CASE("gnuplot runs a script full of hostile text without running any of it", "[post][plot]") {
   const GnuplotInfo gnuplot = probe_gnuplot();
-  if (!gnuplot.available) {  // install-deps.sh installs it; a bare machine only loses the plots
-    WARN("gnuplot is not installed");
-    return;
-  }
+  if (!gnuplot_installed(gnuplot)) return;
   const test::ScratchDir scratch("gnuplot-hostile");
   std::ofstream(scratch / "data.csv") << "0,0\n1,1\n";
   PlotSpec plot{"hostile", hostile[0], hostile[1], hostile[2], {}, {}, {}};
@@ -66,10 +69,7 @@ TEST_CASE("gnuplot runs a script full of hostile text without running any of it"
 
 TEST_CASE("A plot cut short (a full disk) is recognised as incomplete", "[post][plot]") {
   const GnuplotInfo gnuplot = probe_gnuplot();
-  if (!gnuplot.available) {  // install-deps.sh installs it; a bare machine only loses the plots
-    WARN("gnuplot is not installed");
-    return;
-  }
+  if (!gnuplot_installed(gnuplot)) return;
   const test::ScratchDir scratch("gnuplot-truncated");
   std::ofstream(scratch / "data.csv") << "0,0\n1,1\n";
   PlotSpec plot{"p", "title", "x", "y", {{"data.csv", 1, 2, "line", false}}, {}, {}};

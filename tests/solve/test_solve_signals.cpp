@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "scratch_dir.hpp"
@@ -23,29 +24,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The tiny column compressed slowly: thousands of steps, about a second.
-const std::string slow_scene = R"([run]
-end = { plate_displacement = "0.5mm" }
-[grid]
-cell = "1mm"
-shape = "ugimp"
-[time]
-cfl = 0.3
-mass_scaling = 6
-[[points]]
-file = "column.h5"
-[bodies.column]
-role = "deformable"
-material = { E = "10MPa", nu = 0.4, density = "1050kg/m^3" }
-[bodies.bottom_plate]
-role = "fixed"
-[bodies.top_plate]
-role = "driven"
-velocity = ["0mm/s", "0mm/s", "-10mm/s"]
-[output]
-series_every = 50
-snapshot_every = 1000
-)";
+// The tiny column compressed ten times slower and 2.5 times further: thousands of steps.
+std::string slow_scene() {
+  std::string scene = test::tiny_column_scene;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"\"0.2mm\"", "\"0.5mm\""}, {"-100mm/s", "-10mm/s"},
+                          {"series_every = 25", "series_every = 50"}, {"snapshot_every = 100", "snapshot_every = 1000"}})
+    scene.replace(scene.find(from), from.size(), to);
+  return scene;
+}
 
 // Starts latmpm-solve with `args` in `dir` (stdout and stderr to files there); returns its pid.
 pid_t start_solve(const fs::path& dir, const std::vector<std::string>& args) {
@@ -92,7 +78,7 @@ TEST_CASE("A run stopped by a signal saves a checkpoint and resumes as if never 
   const int signo = GENERATE(SIGTERM, SIGINT);
   const test::ScratchDir scratch("solve-signals");
   test::write_points(test::tiny_column({}), scratch / "column.h5");
-  std::ofstream(scratch / "slow.toml") << slow_scene;
+  std::ofstream(scratch / "slow.toml") << slow_scene();
 
   REQUIRE(wait_status(start_solve(scratch.path(), {"slow.toml", "-o", "whole", "--quiet", "--threads", "1"})) == 0);
 

@@ -30,28 +30,7 @@ fs::path scratch() {
   return dir;
 }
 
-const std::string tiny_scene = R"([run]
-end = { plate_displacement = "0.2mm" }
-[grid]
-cell = "1mm"
-shape = "ugimp"
-[time]
-cfl = 0.3
-mass_scaling = 6
-[[points]]
-file = "column.h5"
-[bodies.column]
-role = "deformable"
-material = { E = "10MPa", nu = 0.4, density = "1050kg/m^3" }
-[bodies.bottom_plate]
-role = "fixed"
-[bodies.top_plate]
-role = "driven"
-velocity = ["0mm/s", "0mm/s", "-100mm/s"]
-[output]
-series_every = 25
-snapshot_every = 100
-)";
+const std::string tiny_scene = test::tiny_column_scene;
 
 std::string write_scene(const std::string& name, const std::string& text) {
   const fs::path path = scratch() / name;
