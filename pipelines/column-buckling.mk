@@ -4,11 +4,15 @@
 #   per cell per direction (spacing 0.1 mm); and the cell-size study of t = 2.4 mm,
 #   a = 0.02 L, v0 = 100 mm/s over cells 0.1, 0.2, 0.4, 0.64 mm.
 #   QUICK=1: cell 0.4 mm (spacing 0.2 mm), cell study over 0.3, 0.4, 0.64 mm.
-#   DDMP cases appear once the solver has grid.shape = "ddmp" (pipelines/common.mk).
+#   The runs are the rows of pipelines/column-buckling/cases-{paper,quick}.txt and
+#   cell-study-{paper,quick}.txt; DDMP rows run when the solver lists the shape `ddmp`
+#   (latmpm-solve --list shapes) and DDMP=1 (the default without QUICK). CASES="t2.4-a0 h0.3"
+#   makes only the named cases (and the summaries over them).
 # Results in results/column-buckling/{paper,quick}/: summary.md (latmpm-post's column metrics:
-# peak and post-buckling load against the Euler load, K = 0.5; plots; then the Euler table of
-# summary.sh and the cost of each run), metrics.csv, plots/, curves/, load-displacement-<case>.csv,
-# run-<case>/ (the solver's run directory); cell-study/ the same for the cell-size study.
+# peak and post-buckling load against the Euler load, K = 0.5; plots; the notes and the cost
+# of each run from its status.toml), metrics.csv, runs.csv, plots/, curves/,
+# load-displacement-<case>.csv, run-<case>/ (the solver's run directory); cell-study/ the
+# same for the cell-size study.
 # Case names: t<t>-a<a>[-v50][-ddmp] (v0 = 100 mm/s and uGIMP unless named).
 # Each file depends on the files it is made from: `make -j2 column-buckling` runs cases in
 # parallel and a second call redoes only what changed (pipelines/common.mk).
@@ -17,29 +21,29 @@
 include pipelines/common.mk
 
 CB_SRC     := pipelines/column-buckling
-CB_OUT     := results/column-buckling/$(if $(QUICK),quick,paper)
+CB_MODE    := $(if $(QUICK),quick,paper)
+CB_OUT     := results/column-buckling/$(CB_MODE)
+CB_STUDY   := $(CB_OUT)/cell-study
 CB_CELL    := $(if $(QUICK),0.4mm,0.2mm)
 CB_PLATE   := $(if $(QUICK),0.8mm,0.4mm)
 CB_LENGTH  := 16mm
-CB_STUDY_CELLS := $(if $(QUICK),0.3 0.4 0.64,0.1 0.2 0.4 0.64)
 
-# The case name of t, a, v0, shape.
-cb_case = t$(1)-a$(2)$(if $(filter 50,$(3)),-v50)$(if $(filter ddmp,$(4)),-ddmp)
-cb_velocity = 'bodies.top_plate.velocity=["0mm/s","0mm/s","-$(1)mm/s"]'
-CB_CASES :=
-$(foreach t,2.4 1.6,$(foreach a,0 0.02L,$(foreach v,100 50,$(foreach s,$(PIPELINE_SHAPES),\
-  $(eval CB_CASES += $(call cb_case,$t,$a,$v,$s))\
-  $(eval $(call pipeline_run,$(CB_OUT)/run-$(call cb_case,$t,$a,$v,$s),$(CB_OUT)/points-t$t-a$a.h5,$(CB_SRC)/column.toml,\
-    --set grid.cell=$(CB_CELL) $(call pipeline_shape_sets,$s) --set $(call cb_velocity,$v)))))))
-CB_RUNS := $(foreach c,$(CB_CASES),$(CB_OUT)/run-$c)
+CB_ROWS       := $(call pipeline_rows,$(CB_SRC)/cases-$(CB_MODE).txt,$(DDMP))
+CB_STUDY_ROWS := $(call pipeline_rows,$(CB_SRC)/cell-study-$(CB_MODE).txt,$(DDMP))
+$(call pipeline_table,$(CB_OUT),$(CB_SRC)/cases-$(CB_MODE).txt,$(CB_ROWS))
+$(call pipeline_table,$(CB_STUDY),$(CB_SRC)/cell-study-$(CB_MODE).txt,$(CB_STUDY_ROWS))
+CB_SELECTED       := $(call pipeline_selected,$(CB_ROWS))
+CB_STUDY_SELECTED := $(call pipeline_selected,$(CB_STUDY_ROWS))
+$(call pipeline_check_cases,column-buckling,$(CB_ROWS) $(CB_STUDY_ROWS))
 
 .PHONY: column-buckling column-buckling-results
 column-buckling:
 	$(MAKE) build
 	$(MAKE) column-buckling-results
 
-column-buckling-results: $(CB_OUT)/summary.md $(CB_OUT)/cell-study/summary.md
-	@echo "column-buckling: results in $(CB_OUT)/summary.md and $(CB_OUT)/cell-study/summary.md"
+column-buckling-results: $(if $(CB_SELECTED),$(CB_OUT)/summary.md) $(if $(CB_STUDY_SELECTED),$(CB_STUDY)/summary.md) \
+    $(foreach r,$(CB_SELECTED),$(CB_OUT)/load-displacement-$(call pipeline_field,$r,1).csv)
+	@echo "column-buckling: results in $(CB_OUT)/summary.md and $(CB_STUDY)/summary.md"
 
 # Geometry: the column with end plates as thick as two cells (the base and the driven plate).
 $(CB_OUT)/geometry-t%.h5: | $(BIN)/latmpm-lattice
@@ -57,39 +61,25 @@ $(CB_OUT)/points-t%-a0.h5: $(CB_OUT)/voxel-t%.h5
 $(CB_OUT)/points-t%-a0.02L.h5: $(CB_OUT)/voxel-t%.h5 | $(BIN)/latmpm-imperfect
 	$(BIN)/latmpm-imperfect $< --type sine --amount 0.32mm --length $(CB_LENGTH) --quiet -o $@
 
-$(CB_OUT)/load-displacement-%.csv: $(CB_OUT)/run-%/wall_time.txt $(CB_SRC)/extract.sh
+$(CB_OUT)/load-displacement-%.csv: $(CB_OUT)/run-%/done $(CB_SRC)/extract.sh
 	bash $(CB_SRC)/extract.sh $(<D) $@
 
-# The Euler table (E = 10 MPa, L = 16 mm, K = 0.5, clamped-clamped; summary.sh says why),
-# appended to latmpm-post's summary.
-$(CB_OUT)/euler.md: $(foreach c,$(CB_CASES),$(CB_OUT)/load-displacement-$(c).csv) $(CB_SRC)/summary.sh $(CB_SRC)/notes.md
-	{ cat $(CB_SRC)/notes.md; echo; echo "## Against the Euler load (summary.sh)"; echo; \
-	  bash $(CB_SRC)/summary.sh $(CB_OUT) 10e6 0.016 0.5 $(CB_CASES); } > $@.tmp && mv $@.tmp $@
-$(eval $(call pipeline_post,$(CB_OUT),$(CB_RUNS),--kind column,Buckling column (paper A Sec. 4),$(CB_OUT)/euler.md))
+# latmpm-post's column metrics: peak and post-buckling load against the Euler load
+# pi^2 E I / (K L)^2, K = 0.5 (clamped-clamped: notes.md says why).
+$(eval $(call pipeline_post,$(CB_OUT),$(call pipeline_label_runs,$(CB_OUT),$(CB_SELECTED)),--kind column,Buckling column (paper A Sec. 4),$(CB_SRC)/notes.md))
 
-# Cell-size study: t = 2.4 mm, a = 0.02 L, v0 = 100 mm/s, uGIMP (and DDMP), end plates of two
-# cells, 2 points per cell per direction at every cell size.
-CB_STUDY := $(CB_OUT)/cell-study
-define cb_study_points
-$(CB_STUDY)/geometry-h$(1).h5: | $(BIN)/latmpm-lattice
-	@mkdir -p $$(@D)
+# Cell-size study: t = 2.4 mm, a = 0.02 L, end plates of two cells, 2 points per cell per
+# direction at every cell size h (the point file points-h<h>.h5).
+$(CB_STUDY)/geometry-h%.h5: | $(BIN)/latmpm-lattice
+	@mkdir -p $(@D)
 	$(BIN)/latmpm-lattice --column --diameter 2.4mm --length $(CB_LENGTH) \
-	  --end-plates $$$$(awk 'BEGIN { print 2 * $(1) }')mm --quiet -o $$@
-$(CB_STUDY)/points-h$(1).h5: $(CB_STUDY)/geometry-h$(1).h5 | $(BIN)/latmpm-voxelize $(BIN)/latmpm-imperfect
-	$(BIN)/latmpm-voxelize $$< --cell $(1)mm --ppc 2 --quiet -o - \
-	  | $(BIN)/latmpm-imperfect - --type sine --amount 0.32mm --length $(CB_LENGTH) --quiet -o $$@
-endef
-# At the main cell size the study's case is the main case t2.4-a0.02L: its run is reused.
-cb_study_label = h$(1)$(if $(filter ddmp,$(2)),-ddmp)
-cb_study_main  = $(filter $(1)mm,$(CB_CELL))
-cb_study_run   = $(if $(cb_study_main),$(CB_OUT)/run-$(call cb_case,2.4,0.02L,100,$(2)),$(CB_STUDY)/run-$(cb_study_label))
-CB_STUDY_RUNS := $(foreach h,$(CB_STUDY_CELLS),$(foreach s,$(PIPELINE_SHAPES),$(call cb_study_label,$h,$s)=$(call cb_study_run,$h,$s)))
-$(foreach h,$(CB_STUDY_CELLS),$(if $(call cb_study_main,$h),,$(eval $(call cb_study_points,$h))$(foreach s,$(PIPELINE_SHAPES),\
-  $(eval $(call pipeline_run,$(call cb_study_run,$h,$s),$(CB_STUDY)/points-h$h.h5,$(CB_SRC)/column.toml,\
-    --set grid.cell=$(h)mm $(call pipeline_shape_sets,$s))))))
-$(eval $(call pipeline_post,$(CB_STUDY),$(CB_STUDY_RUNS),--kind column,Buckling column: cell-size study (t = 2.4 mm a = 0.02 L),$(CB_SRC)/cell-study-notes.md))
+	  --end-plates $$(awk 'BEGIN { print 2 * $* }')mm --quiet -o $@
+$(CB_STUDY)/points-h%.h5: $(CB_STUDY)/geometry-h%.h5 | $(BIN)/latmpm-voxelize $(BIN)/latmpm-imperfect
+	$(BIN)/latmpm-voxelize $< --cell $*mm --ppc 2 --quiet -o - \
+	  | $(BIN)/latmpm-imperfect - --type sine --amount 0.32mm --length $(CB_LENGTH) --quiet -o $@
+$(eval $(call pipeline_post,$(CB_STUDY),$(call pipeline_label_runs,$(CB_STUDY),$(CB_STUDY_SELECTED)),--kind column,Buckling column: cell-size study (t = 2.4 mm a = 0.02 L),$(CB_SRC)/cell-study-notes.md))
 
 $(CB_OUT)/summary.md $(CB_STUDY)/summary.md: pipelines/column-buckling.mk
 
 .PRECIOUS: $(CB_OUT)/geometry-t%.h5 $(CB_OUT)/voxel-t%.h5 $(CB_OUT)/points-t%-a0.h5 \
-           $(CB_OUT)/points-t%-a0.02L.h5
+           $(CB_OUT)/points-t%-a0.02L.h5 $(CB_STUDY)/geometry-h%.h5 $(CB_STUDY)/points-h%.h5

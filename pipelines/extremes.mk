@@ -23,11 +23,8 @@ include pipelines/common.mk
 
 EX_SRC := pipelines/extremes
 EX_OUT := results/extremes
-EX_LATTICE_SCENE := pipelines/lattice-compression/lattice.toml
 EX_CASES := slender stiff-fast densify densify-linear one-point mass-scaling
 EX_MS := 6 100 1000 10000
-# (a variable: the commas would split the arguments of $(call ...))
-EX_FAST_VELOCITY := 'bodies.top_plate.velocity=["0mm/s","0mm/s","-4m/s"]'
 
 
 .PHONY: extremes extremes-results
@@ -62,35 +59,20 @@ $(EX_OUT)/below-one-point.txt: $(EX_OUT)/t1p30.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell 2mm --ppc 1 --quiet -o $(EX_OUT)/below-one-point.h5 2> $@.tmp; \
 	  echo "exit=$$?" >> $@.tmp; mv $@.tmp $@
 
-# Runs.
-$(eval $(call pipeline_run,$(EX_OUT)/run-slender,$(EX_OUT)/slender-points.h5,pipelines/column-buckling/column.toml,\
-  --set grid.cell=0.2mm --set output.series_every=50))
-$(eval $(call pipeline_run,$(EX_OUT)/run-stiff-fast,$(EX_OUT)/t2p30-h0.64.h5,$(EX_LATTICE_SCENE),\
-  --set bodies.lattice.material.E=100MPa --set time.mass_scaling=1 \
-  --set $(EX_FAST_VELOCITY) --set run.end.plate_displacement=4mm \
-  --set output.series_every=10))
-$(eval $(call pipeline_run,$(EX_OUT)/run-densify,$(EX_OUT)/t2p30-h1.h5,$(EX_LATTICE_SCENE),\
-  --set grid.cell=1mm --set bodies.lattice.material.model=neo_hookean \
-  --set run.end.plate_displacement=8.4mm --set output.series_every=25))
-$(eval $(call pipeline_run,$(EX_OUT)/run-densify-linear,$(EX_OUT)/t2p30-h1.h5,$(EX_LATTICE_SCENE),\
-  --set grid.cell=1mm --set run.end.plate_displacement=8.4mm --set output.series_every=25))
-$(eval $(call pipeline_run,$(EX_OUT)/run-one-point,$(EX_OUT)/t1p30-one-point.h5,$(EX_LATTICE_SCENE),\
-  --set grid.cell=1.6mm --set run.end.plate_displacement=2mm --set output.series_every=10))
-$(eval $(call pipeline_run,$(EX_OUT)/run-one-point-resolved,$(EX_OUT)/t1p30-resolved.h5,$(EX_LATTICE_SCENE),\
-  --set grid.cell=0.8mm --set run.end.plate_displacement=2mm --set output.series_every=10))
-$(foreach m,$(EX_MS),$(eval $(call pipeline_run,$(EX_OUT)/run-ms$m,$(EX_OUT)/t2p30-h1.h5,$(EX_LATTICE_SCENE),\
-  --set grid.cell=1mm --set time.mass_scaling=$m --set run.end.plate_displacement=2mm --set output.series_every=10)))
+# Runs: the rows of pipelines/extremes/cases.txt.
+EX_ROWS := $(call pipeline_rows,$(EX_SRC)/cases.txt,1)
+$(call pipeline_table,$(EX_OUT),$(EX_SRC)/cases.txt,$(EX_ROWS))
 
 # Post-processing per case (plots, metrics) and the checks.
-$(EX_OUT)/post-slender/metrics.csv: $(EX_OUT)/run-slender/wall_time.txt | $(BIN)/latmpm-post
+$(EX_OUT)/post-slender/metrics.csv: $(EX_OUT)/run-slender/done | $(BIN)/latmpm-post
 	$(BIN)/latmpm-post $(EX_OUT)/run-slender -o $(@D) --kind column --label slender=$(EX_OUT)/run-slender > /dev/null
-$(EX_OUT)/post-%/metrics.csv: $(EX_OUT)/run-%/wall_time.txt | $(BIN)/latmpm-post
+$(EX_OUT)/post-%/metrics.csv: $(EX_OUT)/run-%/done | $(BIN)/latmpm-post
 	$(BIN)/latmpm-post $(<D) -o $(@D) --kind compression --fit-range 0.2mm:0.8mm --label $*=$(<D) > /dev/null
-$(EX_OUT)/post-one-point/metrics.csv: $(EX_OUT)/run-one-point/wall_time.txt $(EX_OUT)/run-one-point-resolved/wall_time.txt | $(BIN)/latmpm-post
+$(EX_OUT)/post-one-point/metrics.csv: $(EX_OUT)/run-one-point/done $(EX_OUT)/run-one-point-resolved/done | $(BIN)/latmpm-post
 	$(BIN)/latmpm-post $(EX_OUT)/run-one-point $(EX_OUT)/run-one-point-resolved -o $(@D) --kind compression \
 	  --fit-range 0.2mm:0.8mm --label one-point=$(EX_OUT)/run-one-point \
 	  --label resolved=$(EX_OUT)/run-one-point-resolved > /dev/null
-$(EX_OUT)/post-mass-scaling/metrics.csv: $(foreach m,$(EX_MS),$(EX_OUT)/run-ms$m/wall_time.txt) | $(BIN)/latmpm-post
+$(EX_OUT)/post-mass-scaling/metrics.csv: $(foreach m,$(EX_MS),$(EX_OUT)/run-ms$m/done) | $(BIN)/latmpm-post
 	$(BIN)/latmpm-post $(foreach m,$(EX_MS),$(EX_OUT)/run-ms$m) -o $(@D) --kind compression \
 	  --fit-range 0.2mm:0.8mm $(foreach m,$(EX_MS),--label ms$m=$(EX_OUT)/run-ms$m) > /dev/null
 

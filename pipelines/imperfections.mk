@@ -3,6 +3,8 @@
 #   E = 10 MPa, otherwise as lattice-compression (5x5x5 cells, 3 mm plates, cell 0.64 mm,
 #   2 points per cell per direction, 20 mm travel at 100 mm/s).
 #   QUICK=1: 2x2x2 cells, 2 mm plates, cell 1 mm, 4 mm travel.
+#   The runs are the rows of pipelines/imperfections/cases-{paper,quick}.txt (DDMP rows as in
+#   lattice-compression.mk); CASES="none A" makes only the named cases.
 # Results in results/imperfections/{paper,quick}/: summary.md, metrics.csv, runs.csv, plots/,
 # curves/, run-<type>[-ddmp]/.
 # Chain: latmpm-lattice --preset T1P40 -> latmpm-voxelize -> latmpm-imperfect --type <X>
@@ -11,25 +13,18 @@
 include pipelines/common.mk
 
 IP_SRC    := pipelines/imperfections
-IP_OUT    := results/imperfections/$(if $(QUICK),quick,paper)
-IP_TYPES  := none A B C D
+IP_MODE   := $(if $(QUICK),quick,paper)
+IP_OUT    := results/imperfections/$(IP_MODE)
 IP_AMOUNT := 1.28mm
 IP_CELL   := $(if $(QUICK),1mm,0.64mm)
 IP_CELLS  := $(if $(QUICK),2x2x2,5x5x5)
 IP_PLATES := $(if $(QUICK),2mm,3mm)
-IP_TRAVEL := $(if $(QUICK),4mm,20mm)
-IP_SERIES := $(if $(QUICK),20,50)
 IP_FIT    := $(if $(QUICK),0.3mm:1mm,0.5mm:3mm)
 
-ip_case = $(1)$(if $(filter ddmp,$(2)),-ddmp)
-IP_RUNS :=
-$(foreach x,$(IP_TYPES),$(foreach s,$(PIPELINE_SHAPES),\
-  $(eval IP_RUNS += $(IP_OUT)/run-$(call ip_case,$x,$s))\
-  $(eval $(call pipeline_run,$(IP_OUT)/run-$(call ip_case,$x,$s),$(IP_OUT)/points-$x.h5,pipelines/lattice-compression/lattice-platen.toml,\
-    --set grid.cell=$(IP_CELL) $(call pipeline_shape_sets,$s) --set bodies.lattice.material.E=10MPa \
-    --set bodies.top_plate.material.E=10MPa \
-    --set $(call pipeline_platen_at,$(call pipeline_lattice_top,T1P40,$(lastword $(subst x, ,$(IP_CELLS))),$(IP_PLATES:mm=))) \
-    --set run.end.plate_displacement=$(IP_TRAVEL) --set output.series_every=$(IP_SERIES)))))
+IP_ROWS     := $(call pipeline_rows,$(IP_SRC)/cases-$(IP_MODE).txt,$(DDMP))
+$(call pipeline_table,$(IP_OUT),$(IP_SRC)/cases-$(IP_MODE).txt,$(IP_ROWS))
+IP_SELECTED := $(call pipeline_selected,$(IP_ROWS))
+$(call pipeline_check_cases,imperfections,$(IP_ROWS))
 
 .PHONY: imperfections imperfections-results
 imperfections:
@@ -51,7 +46,7 @@ $(IP_OUT)/points-none.h5: $(IP_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
 $(IP_OUT)/points-%.h5: $(IP_OUT)/points-none.h5 | $(BIN)/latmpm-imperfect
 	$(BIN)/latmpm-imperfect $< --type $* --amount $(IP_AMOUNT) --quiet -o $@
 
-$(eval $(call pipeline_post,$(IP_OUT),$(IP_RUNS),--kind compression --load load_fixed --fit-range $(IP_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IP_SRC)/notes.md))
+$(eval $(call pipeline_post,$(IP_OUT),$(call pipeline_label_runs,$(IP_OUT),$(IP_SELECTED)),--kind compression --load load_fixed --fit-range $(IP_FIT),Imperfections of T1P40 (paper A Sec. 5.3),$(IP_SRC)/notes.md))
 
 $(IP_OUT)/summary.md: pipelines/imperfections.mk
 

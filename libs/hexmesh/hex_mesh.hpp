@@ -36,7 +36,7 @@ struct CylinderMeshSpec {
 // d/(4k) on a side.
 CylinderMeshSpec paper_b_cylinder(int level, double diameter, double height);
 
-// Throws InputError("--" + field...) for non-positive sizes or divisions.
+// Sizes in m. Throws InputError("hex mesh", field, problem) for non-positive sizes or divisions.
 HexMesh cylinder_hex_mesh(const CylinderMeshSpec& spec, const std::string& msh_path = "");
 HexMesh box_hex_mesh(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, const Eigen::Vector3i& divisions,
                      const std::string& msh_path = "");

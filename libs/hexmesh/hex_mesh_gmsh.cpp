@@ -87,8 +87,8 @@ void mesh_and_collect(HexMesh& out, const std::string& msh_path) {
   try {
     gmsh::model::geo::synchronize();
     gmsh::model::mesh::generate(3);
-    if (!msh_path.empty()) gmsh::write(msh_path);
     out = collect_hexahedra("generated mesh", 1);
+    if (!msh_path.empty()) gmsh::write(msh_path);  // only a mesh that passed the checks
   } catch (const std::string& e) {
     throw InputError("hex mesh", "", "gmsh cannot mesh the cylinder: " + e);
   }

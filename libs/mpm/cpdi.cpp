@@ -19,23 +19,34 @@ HexVertices convected_vertices(const Vec3& position, const Mat3& F, const HexVer
   return x;
 }
 
+CpdiVertexStencils cpdi_vertex_stencils(const HexVertices& vertices, const std::array<Real, 8>& weight,
+                                        const std::array<Vec3, 8>& gradient, Real h) {
+  CpdiVertexStencils out;
+  for (int a = 0; a < 8; ++a) {
+    CpdiVertexStencil& v = out[size_t(a)];
+    const Vec3 g = vertices[size_t(a)] / h;
+    Vec3 fraction;
+    for (int d = 0; d < 3; ++d) {
+      v.cell[d] = int(std::floor(g[d]));
+      fraction[d] = g[d] - v.cell[d];
+    }
+    for (int c = 0; c < 8; ++c)  // the eight tent functions N̄_I(x_α) of the vertex's cell
+      v.tent[c] = ((c & 1) ? fraction.x() : 1 - fraction.x()) * ((c & 2) ? fraction.y() : 1 - fraction.y()) *
+                  ((c & 4) ? fraction.z() : 1 - fraction.z());
+    v.weight = weight[size_t(a)];
+    v.gradient = gradient[size_t(a)];
+  }
+  return out;
+}
+
 namespace {
 
-// Eq. 7 given the vertices and the per-vertex integrals already divided by the volume.
-CpdiStencil assemble(const HexVertices& vertices, const std::array<Real, 8>& weight, const std::array<Vec3, 8>& gradient,
-                     Real volume, Real h) {
-  // The node box: every cell a vertex lies in.
+// Eq. 7 summed into the box of nodes the vertices' cells span.
+CpdiStencil assemble(const CpdiVertexStencils& vertices, Real volume) {
   Eigen::Vector3i lo = Eigen::Vector3i::Constant(INT32_MAX), hi = Eigen::Vector3i::Constant(INT32_MIN);
-  std::array<Eigen::Vector3i, 8> cell;
-  std::array<Vec3, 8> fraction;
-  for (int a = 0; a < 8; ++a) {
-    const Vec3 g = vertices[a] / h;
-    for (int d = 0; d < 3; ++d) {
-      cell[a][d] = int(std::floor(g[d]));
-      fraction[a][d] = g[d] - cell[a][d];
-    }
-    lo = lo.cwiseMin(cell[a]);
-    hi = hi.cwiseMax(cell[a] + Eigen::Vector3i::Ones());
+  for (const CpdiVertexStencil& v : vertices) {
+    lo = lo.cwiseMin(v.cell);
+    hi = hi.cwiseMax(v.cell + Eigen::Vector3i::Ones());
   }
   CpdiStencil s;
   s.first_node = lo;
@@ -44,18 +55,13 @@ CpdiStencil assemble(const HexVertices& vertices, const std::array<Real, 8>& wei
   s.weight.assign(n, 0);
   s.gradient.assign(n, Vec3::Zero());
   s.volume = volume;
-  for (int a = 0; a < 8; ++a) {
-    // The eight tent functions N̄_I(x_α) of the vertex's cell.
+  for (const CpdiVertexStencil& v : vertices)
     for (int c = 0; c < 8; ++c) {
-      const int di = c & 1, dj = (c >> 1) & 1, dk = c >> 2;
-      const Real tent = (di ? fraction[a].x() : 1 - fraction[a].x()) * (dj ? fraction[a].y() : 1 - fraction[a].y()) *
-                        (dk ? fraction[a].z() : 1 - fraction[a].z());
-      const Eigen::Vector3i local = cell[a] + Eigen::Vector3i(di, dj, dk) - lo;
+      const Eigen::Vector3i local = v.node(c) - lo;
       const size_t e = size_t(local.x()) + size_t(s.node_count.x()) * (size_t(local.y()) + size_t(s.node_count.y()) * size_t(local.z()));
-      s.weight[e] += weight[a] * tent;
-      s.gradient[e] += gradient[a] * tent;
+      s.weight[e] += v.weight * v.tent[c];
+      s.gradient[e] += v.gradient * v.tent[c];
     }
-  }
   return s;
 }
 
@@ -72,7 +78,7 @@ CpdiStencil cpdi_stencil(const HexVertices& vertices, Real h) {
   std::array<Real, 8> weight;
   std::array<Vec3, 8> gradient;
   for (int a = 0; a < 8; ++a) weight[a] = hex.vertex_weight[a] / hex.volume, gradient[a] = hex.vertex_gradient[a] / hex.volume;
-  return assemble(vertices, weight, gradient, hex.volume, h);
+  return assemble(cpdi_vertex_stencils(vertices, weight, gradient, h), hex.volume);
 }
 
 CpdiDomain make_cpdi_domain(const HexVertices& reference_vertices) {
@@ -93,8 +99,8 @@ CpdiStencil cpdi_stencil(const CpdiDomain& domain, const Vec3& position, const M
   const Mat3 inverse_transpose = F.inverse().transpose();
   std::array<Vec3, 8> gradient;
   for (int a = 0; a < 8; ++a) gradient[a] = inverse_transpose * domain.gradient_per_volume[a];
-  return assemble(convected_vertices(position, F, domain.offsets), domain.weight_fraction, gradient,
-                  jacobian * domain.volume, h);
+  return assemble(cpdi_vertex_stencils(convected_vertices(position, F, domain.offsets), domain.weight_fraction, gradient, h),
+                  jacobian * domain.volume);
 }
 
 }  // namespace latmpm::mpm

@@ -29,6 +29,21 @@ struct CpdiStencil {
   Eigen::Vector3i node(size_t n) const;  // grid index of entry n
 };
 
+// Eq. 7 vertex by vertex, the form the transfers can loop over: vertex α adds to the eight
+// nodes of its grid cell S_I += weight · tent[c] and ∇S_I += gradient · tent[c], with
+// weight = ∫Q_α dv / v and gradient = ∫grad Q_α dv / v. The eight vertices' sums are the
+// stencil; vertices sharing nodes accumulate.
+struct CpdiVertexStencil {
+  Eigen::Vector3i cell = Eigen::Vector3i::Zero();  // grid cell of the vertex: its lowest node
+  Real tent[8] = {};  // N̄_I(x_α) of node cell + (c&1, c>>1&1, c>>2)
+  Real weight = 0;    // ∫Q_α dv / v
+  Vec3 gradient = Vec3::Zero();  // ∫grad Q_α dv / v, 1/m
+  Eigen::Vector3i node(int c) const { return cell + Eigen::Vector3i(c & 1, (c >> 1) & 1, c >> 2); }
+};
+using CpdiVertexStencils = std::array<CpdiVertexStencil, 8>;
+CpdiVertexStencils cpdi_vertex_stencils(const HexVertices& vertices, const std::array<Real, 8>& weight,
+                                        const std::array<Vec3, 8>& gradient, Real cell_size);
+
 // The domain's vertices after the particle moved to `position` with deformation gradient F,
 // from their offsets to the centroid in the reference configuration (CPDI1, Fig. 2).
 HexVertices convected_vertices(const Vec3& position, const Mat3& F, const HexVertices& reference_offsets);

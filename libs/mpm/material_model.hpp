@@ -1,6 +1,7 @@
 // The closed set of constitutive models and the one place that dispatches over them.
 // Adding a model: one header like linear_elastic.hpp, one alternative here, one case in
-// make_material_model. A model provides, as templates over T = Real or Pack,
+// make_material_model. A model with per-particle history declares it once
+// (material_history.hpp); the particle columns, sorting and checkpoints follow. A model provides, as templates over T = Real or Pack,
 // update_stress(Deformation<T>, Stress<T>&) and strain_energy_density(Deformation<T>,
 // Stress<T>) (J/m³ of reference volume), and wave_speed_squared(J) (m²/s², non-increasing
 // in J: the solver evaluates it at the smallest J of each body run).
@@ -8,6 +9,7 @@
 #include <variant>
 
 #include "mpm/linear_elastic.hpp"
+#include "mpm/material_history.hpp"
 #include "mpm/neo_hookean.hpp"
 
 namespace latmpm::mpm {
@@ -23,24 +25,26 @@ inline MaterialModel make_material_model(const MaterialParameters& m, Real mass_
 }
 
 // One particle with Eigen types (set-up, tests): the stress after a step, and ψ per
-// reference volume for the deformation F and stress s.
+// reference volume for the deformation F and stress s. `history`: the particle's history
+// variables (material_history.hpp), updated in place; unused by models without history.
 template <class Model>
-SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s) {
+SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s,
+                         Real* history = nullptr) {
   const Deformation<Real> d = make_deformation(L, F_new, dt);
   Real out[6];
   for (int c = 0; c < 6; ++c) out[c] = s[c];
-  model.update_stress(d, out);
+  update_material_stress(model, d, out, history);
   SymTensor result;
   for (int c = 0; c < 6; ++c) result[c] = out[c];
   return result;
 }
 
 template <class Model>
-Real strain_energy_density(const Model& model, const Mat3& F, const SymTensor& s) {
+Real strain_energy_density(const Model& model, const Mat3& F, const SymTensor& s, const Real* history = nullptr) {
   const Deformation<Real> d = make_deformation(Mat3::Zero(), F, 0);
   Real stress[6];
   for (int c = 0; c < 6; ++c) stress[c] = s[c];
-  return model.strain_energy_density(d, stress);
+  return material_energy_density(model, d, stress, history);
 }
 
 }  // namespace latmpm::mpm

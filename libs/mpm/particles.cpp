@@ -1,42 +1,36 @@
 #include "mpm/particles.hpp"
 
+#include "mpm/particle_fields.hpp"
+
 namespace latmpm::mpm {
 
-namespace {
-template <class T>
-void apply(std::vector<T>& v, const std::vector<uint32_t>& order) {
-  std::vector<T> out(v.size());
-  for (size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
-  v.swap(out);
-}
-}  // namespace
-
 void Particles::permute(const std::vector<uint32_t>& order) {
-  apply(position, order);
-  apply(velocity, order);
-  apply(mass, order);
-  apply(volume0, order);
-  apply(deformation, order);
-  apply(stress, order);
-  apply(half_size0, order);
-  apply(body, order);
-  apply(id, order);
-  apply(flags, order);
-  if (!contact_body.empty()) apply(contact_body, order), apply(contact_anchor, order);
+  for_each_particle_field(*this, [&](const ParticleField& field, auto& v, const auto&) {
+    if (field.optional && v.empty()) return;
+    std::remove_reference_t<decltype(v)> out(v.size());
+    for (size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+    v.swap(out);
+  });
 }
 
 void Particles::resize(size_t n) {
-  position.resize(n, Vec3::Zero());
-  velocity.resize(n, Vec3::Zero());
-  mass.resize(n, 0);
-  volume0.resize(n, 0);
-  deformation.resize(n, Mat3::Identity());
-  stress.resize(n, SymTensor::Zero());
-  half_size0.resize(n, Vec3::Zero());
-  body.resize(n, 0);
-  id.resize(n, 0);
-  flags.resize(n, 0);
-  if (!contact_body.empty()) contact_body.resize(n, -1), contact_anchor.resize(n, Vec3::Zero());
+  for_each_particle_field(*this, [&](const ParticleField& field, auto& v, const auto& fill) {
+    if (!(field.optional && v.empty())) v.resize(n, fill);
+  });
+}
+
+const HistoryColumn* Particles::history_column(const std::string& name) const {
+  for (const auto& c : history)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+size_t particle_memory_bytes(const Particles& ps) {
+  size_t bytes = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, const auto& v, const auto&) {
+    bytes += v.capacity() * sizeof(v[0]);
+  });
+  return bytes;
 }
 
 }  // namespace latmpm::mpm

@@ -3,12 +3,23 @@
 // particle changes during a run; `id` is its index in the original PointSet.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "mpm/real.hpp"
 
 namespace latmpm::mpm {
 
+// One history variable of a material model (material_history.hpp), per particle: every
+// particle has the column, particles of other models keep `initial`.
+struct HistoryColumn {
+  std::string name;
+  Real initial = 0;
+  std::vector<Real> values;
+};
+
+// The arrays below are listed once more, in particle_fields.hpp: everything that handles
+// every field (resize, permute, checkpoint, memory) goes through that list.
 struct Particles {
   std::vector<Vec3> position;        // m
   std::vector<Vec3> velocity;        // m/s
@@ -26,6 +37,8 @@ struct Particles {
   // body's frame (m, x_A − the body's displacement).
   std::vector<int32_t> contact_body;
   std::vector<Vec3> contact_anchor;
+  // Material history, one column per variable the run's models declare (material_history.hpp).
+  std::vector<HistoryColumn> history;
 
   static constexpr uint8_t record_flag = 1;  // carries the record tag
   static constexpr uint8_t held_flag = 2;    // deformable point whose stencil nodes are held at rest
@@ -35,7 +48,10 @@ struct Particles {
   Real von_mises_stress(size_t p) const { return von_mises(stress[p]); }
   // Applies the same permutation (new index i takes old index order[i]) to every array.
   void permute(const std::vector<uint32_t>& order);
+  // Every array to n particles, new ones at the registry's fill values.
   void resize(size_t n);
+  // The history column of that name, or nullptr.
+  const HistoryColumn* history_column(const std::string& name) const;
 };
 
 }  // namespace latmpm::mpm

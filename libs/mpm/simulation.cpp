@@ -6,6 +6,7 @@
 
 #include <map>
 
+#include "mpm/particle_fields.hpp"
 #include "mpm/simulation_impl.hpp"
 #include "points/point_set.hpp"
 
@@ -52,7 +53,11 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     info.role = b.role;
     info.velocity = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
     info.hold_slip = b.hold_slip;
-    if (b.role == BodyRole::deformable) info.model = make_material_model(b.material, settings_.mass_scaling);
+    if (b.role == BodyRole::deformable) {
+      info.model = make_material_model(b.material, settings_.mass_scaling);
+      info.history_columns = std::visit(
+          [&](const auto& model) { return declare_history<std::decay_t<decltype(model)>>(particles_); }, info.model);
+    }
     impl_->body_info.push_back(info);
   }
   for (const auto& b : bodies_)
@@ -405,14 +410,6 @@ size_t Simulation::grid_memory_bytes() const {
          d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.omega.capacity();
 }
 
-size_t Simulation::particle_memory_bytes() const {
-  const Particles& p = particles_;
-  return p.position.capacity() * sizeof(Vec3) + p.velocity.capacity() * sizeof(Vec3) +
-         p.mass.capacity() * sizeof(Real) + p.volume0.capacity() * sizeof(Real) +
-         p.deformation.capacity() * sizeof(Mat3) + p.stress.capacity() * sizeof(SymTensor) +
-         p.half_size0.capacity() * sizeof(Vec3) + p.body.capacity() * sizeof(int32_t) +
-         p.id.capacity() * sizeof(uint32_t) + p.flags.capacity() * sizeof(uint8_t) +
-         p.contact_body.capacity() * sizeof(int32_t) + p.contact_anchor.capacity() * sizeof(Vec3);
-}
+size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(particles_); }
 
 }  // namespace latmpm::mpm

@@ -375,6 +375,18 @@ struct Simulation::Impl {
     return m > 0 ? Vec3(mx / m) : Vec3::Zero();
   }
 
+  // ψ of deformable particle p (J/m³ of reference volume), with its history if its model has one.
+  Real energy_density(size_t p) const {
+    const Particles& ps = sim.particles_;
+    const BodyInfo& body = body_info[size_t(ps.body[p])];
+    return std::visit([&](const auto& m) {
+      constexpr size_t count = history_size<std::decay_t<decltype(m)>>;
+      Real history[count > 0 ? count : 1] = {};
+      for (size_t k = 0; k < count; ++k) history[k] = ps.history[body.history_columns[k]].values[p];
+      return strain_energy_density(m, ps.deformation[p], ps.stress[p], history);
+    }, body.model);
+  }
+
   // Speeds, energy and body centres from the particles as they are now: at the start, and
   // after a caller changed them through mutable_particles() before the first step.
   bool refresh_needed = true;
@@ -400,10 +412,7 @@ struct Simulation::Impl {
       mass[b] += ps.mass[p];
       if (body_info[b].role != BodyRole::deformable) continue;
       max_speed = std::max(max_speed, ps.velocity[p].norm());
-      initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() +
-          ps.volume0[p] * std::visit([&](const auto& m) {
-            return strain_energy_density(m, ps.deformation[p], ps.stress[p]);
-          }, body_info[b].model);
+      initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() + ps.volume0[p] * energy_density(p);
     }
     initial_centre.assign(nb, Vec3::Zero());
     for (size_t b = 0; b < nb; ++b) if (mass[b] > 0) initial_centre[b] = mx[b] / mass[b];

@@ -1,133 +1,119 @@
-// Saving and restoring a Simulation's state for checkpoints. The particles are stored in
-// their internal (bucket-sorted) order together with the buckets and runs, so a restored run
-// scatters and gathers in exactly the order the uninterrupted one would: results agree bit
-// for bit (the thread count does not matter, simulation_impl.hpp).
+// Saving and restoring a Simulation's state for checkpoints, as named datasets through
+// checkpoint_io.hpp. The particles are stored in their internal (bucket-sorted) order
+// together with the buckets and runs, so a restored run scatters and gathers in exactly the
+// order the uninterrupted one would: results agree bit for bit (the thread count does not
+// matter, simulation_impl.hpp). Every particle field comes from the registry
+// (particle_fields.hpp).
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
+#include "mpm/checkpoint_io.hpp"
+#include "mpm/particle_fields.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/simulation_impl.hpp"
 
 namespace latmpm::mpm {
 
 namespace {
-template <class V, int N>
-std::vector<double> flatten(const std::vector<V>& v) {
-  std::vector<double> out;
-  out.reserve(v.size() * N);
-  for (const auto& x : v)
-    for (int i = 0; i < N; ++i) out.push_back(x.data()[i]);
-  return out;
+// The step's diagnostics and the carried solver scalars, by name (both directions).
+template <class D, class Im, class R, class Visit>
+void for_each_solver_scalar(D& d, Im& im, R& initial_rigid_energy, R& driven_rigid_work, Visit&& visit) {
+  visit("time", d.time);
+  visit("dt", d.dt);
+  visit("stable_dt", d.stable_dt);
+  visit("record_force", d.record_force);
+  visit("kinetic_energy", d.kinetic_energy);
+  visit("strain_energy", d.strain_energy);
+  visit("external_work", d.external_work);
+  visit("max_speed", d.max_speed);
+  visit("constraint_work", d.constraint_work);
+  visit("gravity_work", d.gravity_work);
+  visit("rigid_energy", d.rigid_energy);
+  visit("energy_error", d.energy_error);
+  visit("carried_max_speed", im.max_speed);
+  visit("carried_max_wave_speed", im.max_wave_speed);
+  visit("initial_energy", im.initial_energy);
+  visit("initial_rigid_energy", initial_rigid_energy);
+  visit("driven_rigid_work", driven_rigid_work);
 }
-template <class V, int N>
-std::vector<V> unflatten(const std::vector<double>& d) {
-  std::vector<V> out(d.size() / N);
-  for (size_t p = 0; p < out.size(); ++p)
-    for (int i = 0; i < N; ++i) out[p].data()[i] = d[p * N + i];
-  return out;
+
+std::vector<std::string> names_of(const std::vector<BodySettings>& bodies) {
+  std::vector<std::string> names;
+  for (const auto& b : bodies) names.push_back(b.name);
+  return names;
 }
-std::vector<double> vec3s(const std::vector<RigidBodyState>& s, Vec3 RigidBodyState::*field) {
-  std::vector<double> out;
-  for (const auto& r : s)
-    for (int a = 0; a < 3; ++a) out.push_back((r.*field)[a]);
-  return out;
+std::vector<std::string> names_of(const std::vector<RigidBodySettings>& bodies) {
+  std::vector<std::string> names;
+  for (const auto& b : bodies) names.push_back(b.name);
+  return names;
 }
 }  // namespace
 
 void Simulation::save_state(Hdf5File& f, const std::string& g) const {
-  const Particles& p = particles_;
-  const size_t n = p.size();
-  std::vector<std::string> names;
-  for (const auto& b : bodies_) names.push_back(b.name);
-  f.write_strings(g + "/bodies", names);
-  names.clear();
-  for (const auto& b : rigid_bodies_) names.push_back(b.name);
-  if (!names.empty()) f.write_strings(g + "/rigid_bodies", names);
-  f.write(g + "/particles/position", flatten<Vec3, 3>(p.position), {n, 3});
-  f.write(g + "/particles/velocity", flatten<Vec3, 3>(p.velocity), {n, 3});
-  f.write(g + "/particles/mass", p.mass, {n});
-  f.write(g + "/particles/volume0", p.volume0, {n});
-  f.write(g + "/particles/deformation", flatten<Mat3, 9>(p.deformation), {n, 9});
-  f.write(g + "/particles/stress", flatten<SymTensor, 6>(p.stress), {n, 6});
-  f.write(g + "/particles/half_size0", flatten<Vec3, 3>(p.half_size0), {n, 3});
-  f.write(g + "/particles/body", p.body, {n});
-  f.write(g + "/particles/id", std::vector<int64_t>(p.id.begin(), p.id.end()), {n});
-  f.write(g + "/particles/flags", p.flags, {n});
-  if (!p.contact_body.empty()) {  // penalty contact history (rigid_contact.hpp)
-    f.write(g + "/particles/contact_body", p.contact_body, {n});
-    f.write(g + "/particles/contact_anchor", flatten<Vec3, 3>(p.contact_anchor), {n, 3});
-  }
+  CheckpointWriter out(f, g);
+  out.strings("bodies", names_of(bodies_));
+  if (!rigid_bodies_.empty()) out.strings("rigid_bodies", names_of(rigid_bodies_));
+
+  CheckpointWriter particles = out.sub("particles");
+  for_each_particle_field(particles_, [&](const ParticleField& field, const auto& values, const auto&) {
+    if (!(field.optional && values.empty())) particles.rows(field.name, values);
+  });
 
   const auto& im = *impl_;
   std::vector<int64_t> buckets, runs;
   for (const auto& b : im.buckets.buckets())
     buckets.insert(buckets.end(), {b.coord[0], b.coord[1], b.coord[2], b.begin, b.end, b.run_begin, b.run_end});
   for (const auto& r : im.buckets.runs()) runs.insert(runs.end(), {r.body, r.begin, r.end});
-  f.write(g + "/buckets/buckets", buckets, {buckets.size() / 7, 7});
-  f.write(g + "/buckets/runs", runs, {runs.size() / 3, 3});
-  f.set_attribute(g + "/buckets/buckets", "needs_sort", int64_t(im.needs_sort));
+  CheckpointWriter sorting = out.sub("buckets");
+  sorting.integers("buckets", buckets, 7);
+  sorting.integers("runs", runs, 3);
+  sorting.integer("needs_sort", im.needs_sort);
 
+  CheckpointWriter solver = out.sub("solver");
   const StepDiagnostics& d = diagnostics_;
-  const size_t nb = bodies_.size(), nr = rigid_bodies_.size();
-  f.write(g + "/solver/body_displacement", flatten<Vec3, 3>(d.body_displacement), {nb, 3});
-  f.write(g + "/solver/reaction", flatten<Vec3, 3>(d.reaction), {nb, 3});
-  f.write(g + "/solver/initial_centre", flatten<Vec3, 3>(im.initial_centre), {im.initial_centre.size(), 3});
-  f.write(g + "/solver/scalars",
-          std::vector<double>{double(d.step), d.time, d.dt, d.stable_dt, d.record_force, d.kinetic_energy,
-                              d.strain_energy, d.external_work, d.max_speed, d.constraint_work, d.gravity_work,
-                              d.rigid_energy, d.energy_error, im.max_speed, im.max_wave_speed, im.initial_energy,
-                              initial_rigid_energy_, driven_rigid_work_},
-          {18});
-  f.write(g + "/rigid/displacement", vec3s(rigid_states_, &RigidBodyState::displacement), {nr, 3});
-  f.write(g + "/rigid/velocity", vec3s(rigid_states_, &RigidBodyState::velocity), {nr, 3});
-  f.write(g + "/rigid/reaction", vec3s(rigid_states_, &RigidBodyState::reaction), {nr, 3});
-  std::vector<double> work;
-  for (const auto& r : rigid_states_) work.push_back(r.work);
-  f.write(g + "/rigid/work", work, {nr});
+  solver.integer("step", d.step);
+  for_each_solver_scalar(d, im, initial_rigid_energy_, driven_rigid_work_,
+                         [&](const char* name, Real value) { solver.scalar(name, value); });
+  solver.rows("body_displacement", d.body_displacement);
+  solver.rows("reaction", d.reaction);
+  solver.rows("initial_centre", im.initial_centre);
+
+  CheckpointWriter rigid = out.sub("rigid");
+  std::vector<Vec3> displacement, velocity, reaction;
+  std::vector<Real> work;
+  for (const auto& r : rigid_states_)
+    displacement.push_back(r.displacement), velocity.push_back(r.velocity), reaction.push_back(r.reaction),
+        work.push_back(r.work);
+  rigid.rows("displacement", displacement);
+  rigid.rows("velocity", velocity);
+  rigid.rows("reaction", reaction);
+  rigid.rows("work", work);
 }
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {
+  const CheckpointReader in(f, g);
   auto& im = *impl_;
   const size_t n = particles_.size();
-  auto expect = [&](const std::string& dataset, size_t rows) {
-    const auto dims = f.shape(g + dataset);
-    if (dims.empty() || dims[0] != rows)
-      throw InputError(f.path(), g + dataset,
-                       "has " + std::to_string(dims.empty() ? 0 : dims[0]) + " rows where the scene gives " +
-                           std::to_string(rows) + ": the checkpoint belongs to another scene or point set");
-  };
-  expect("/particles/position", n);
-  std::vector<std::string> names;
-  for (const auto& b : bodies_) names.push_back(b.name);
-  if (f.read_strings(g + "/bodies") != names)
+  if (in.strings("bodies") != names_of(bodies_))
     throw InputError(f.path(), g + "/bodies", "the checkpoint's bodies differ from the scene's (another scene?)");
-  names.clear();
-  for (const auto& b : rigid_bodies_) names.push_back(b.name);
-  if (!names.empty() && (!f.exists(g + "/rigid_bodies") || f.read_strings(g + "/rigid_bodies") != names))
+  const auto rigid_names = names_of(rigid_bodies_);
+  if (!rigid_names.empty() && (!in.has("rigid_bodies") || in.strings("rigid_bodies") != rigid_names))
     throw InputError(f.path(), g + "/rigid_bodies", "the checkpoint's rigid bodies differ from the scene's");
-  expect("/solver/reaction", bodies_.size());
-  expect("/rigid/velocity", rigid_bodies_.size());
-  Particles& p = particles_;
-  p.position = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/position"));
-  p.velocity = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/velocity"));
-  p.mass = f.read_doubles(g + "/particles/mass");
-  p.volume0 = f.read_doubles(g + "/particles/volume0");
-  p.deformation = unflatten<Mat3, 9>(f.read_doubles(g + "/particles/deformation"));
-  p.stress = unflatten<SymTensor, 6>(f.read_doubles(g + "/particles/stress"));
-  p.half_size0 = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/half_size0"));
-  p.body = f.read_int32(g + "/particles/body");
-  const auto ids = f.read_int64(g + "/particles/id");
-  p.id.assign(ids.begin(), ids.end());
-  p.flags = f.read_uint8(g + "/particles/flags");
-  if (!p.contact_body.empty()) {
-    if (!f.exists(g + "/particles/contact_body"))
-      throw InputError(f.path(), g + "/particles/contact_body",
-                       "missing: the scene has a penalty-contact rigid body, the checkpoint's run had none");
-    p.contact_body = f.read_int32(g + "/particles/contact_body");
-    p.contact_anchor = unflatten<Vec3, 3>(f.read_doubles(g + "/particles/contact_anchor"));
-  }
 
-  const auto b = f.read_int64(g + "/buckets/buckets");
-  const auto r = f.read_int64(g + "/buckets/runs");
+  // Everything is read and checked before anything is changed: a refused checkpoint leaves
+  // the simulation as it was.
+  const CheckpointReader particles_in = in.sub("particles");
+  Particles p = particles_;
+  for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
+    if (field.optional && values.empty()) return;  // the scene's run does not use it
+    if (field.optional && !particles_in.has(field.name))
+      throw InputError(f.path(), g + "/particles/" + field.name,
+                       "missing: the scene's run uses it (penalty contact), the checkpoint's run did not");
+    values = particles_in.rows<typename std::decay_t<decltype(values)>::value_type>(field.name, n);
+  });
+
+  const CheckpointReader sorting = in.sub("buckets");
+  const auto b = sorting.integers("buckets", 7);
+  const auto r = sorting.integers("runs", 3);
   std::vector<Bucket> buckets(b.size() / 7);
   for (size_t i = 0; i < buckets.size(); ++i) {
     const int64_t* x = &b[7 * i];
@@ -137,30 +123,40 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   }
   std::vector<BodyRun> runs(r.size() / 3);
   for (size_t i = 0; i < runs.size(); ++i) runs[i] = {int32_t(r[3 * i]), uint32_t(r[3 * i + 1]), uint32_t(r[3 * i + 2])};
+  const bool needs_sort = sorting.integer("needs_sort") != 0;
+
+  const CheckpointReader solver = in.sub("solver");
+  const size_t nb = bodies_.size();
+  StepDiagnostics d = diagnostics_;
+  d.step = solver.integer("step");
+  struct Carried {
+    Real max_speed = 0, max_wave_speed = 0, initial_energy = 0;
+  } carried;
+  Real initial_rigid_energy = 0, driven_rigid_work = 0;
+  for_each_solver_scalar(d, carried, initial_rigid_energy, driven_rigid_work,
+                         [&](const char* name, Real& value) { value = solver.scalar(name); });
+  d.body_displacement = solver.rows<Vec3>("body_displacement", nb);
+  d.reaction = solver.rows<Vec3>("reaction", nb);
+  auto initial_centre = solver.rows<Vec3>("initial_centre", nb);
+
+  const CheckpointReader rigid = in.sub("rigid");
+  const size_t nr = rigid_bodies_.size();
+  const auto disp = rigid.rows<Vec3>("displacement", nr);
+  const auto vel = rigid.rows<Vec3>("velocity", nr);
+  const auto reac = rigid.rows<Vec3>("reaction", nr);
+  const auto work = rigid.rows<Real>("work", nr);
+
+  particles_ = std::move(p);
   im.buckets.restore(std::move(buckets), std::move(runs));
-  im.needs_sort = f.int_attribute(g + "/buckets/buckets", "needs_sort") != 0;
+  im.needs_sort = needs_sort;
   if (!im.needs_sort) im.compute_boxes_from_positions();
-
-  StepDiagnostics& d = diagnostics_;
-  d.body_displacement = unflatten<Vec3, 3>(f.read_doubles(g + "/solver/body_displacement"));
-  d.reaction = unflatten<Vec3, 3>(f.read_doubles(g + "/solver/reaction"));
-  im.initial_centre = unflatten<Vec3, 3>(f.read_doubles(g + "/solver/initial_centre"));
-  const auto s = f.read_doubles(g + "/solver/scalars");
-  if (s.size() != 18) throw InputError(f.path(), g + "/solver/scalars", "expected 18 values");
-  d.step = int64_t(s[0]), d.time = s[1], d.dt = s[2], d.stable_dt = s[3], d.record_force = s[4];
-  d.kinetic_energy = s[5], d.strain_energy = s[6], d.external_work = s[7], d.max_speed = s[8];
-  d.constraint_work = s[9], d.gravity_work = s[10], d.rigid_energy = s[11], d.energy_error = s[12];
-  im.max_speed = s[13], im.max_wave_speed = s[14], im.initial_energy = s[15];
-  initial_rigid_energy_ = s[16], driven_rigid_work_ = s[17];
+  im.max_speed = carried.max_speed, im.max_wave_speed = carried.max_wave_speed, im.initial_energy = carried.initial_energy;
+  im.initial_centre = std::move(initial_centre);
   im.refresh_needed = false;
-
-  const auto disp = unflatten<Vec3, 3>(f.read_doubles(g + "/rigid/displacement"));
-  const auto vel = unflatten<Vec3, 3>(f.read_doubles(g + "/rigid/velocity"));
-  const auto reac = unflatten<Vec3, 3>(f.read_doubles(g + "/rigid/reaction"));
-  const auto work = f.read_doubles(g + "/rigid/work");
-  for (size_t k = 0; k < rigid_states_.size(); ++k)
-    rigid_states_[k] = {disp[k], vel[k], reac[k], work[k]};
+  initial_rigid_energy_ = initial_rigid_energy, driven_rigid_work_ = driven_rigid_work;
+  for (size_t k = 0; k < nr; ++k) rigid_states_[k] = {disp[k], vel[k], reac[k], work[k]};
   d.rigid = rigid_states_;
+  diagnostics_ = std::move(d);
 }
 
 }  // namespace latmpm::mpm

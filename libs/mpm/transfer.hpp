@@ -16,6 +16,7 @@
 #include "mpm/bucket_buffer.hpp"
 #include "mpm/cell_occupancy.hpp"
 #include "mpm/ddmp_grid.hpp"
+#include "mpm/material_history.hpp"
 #include "mpm/material_model.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
@@ -28,6 +29,9 @@ struct BodyInfo {
   BodyRole role = BodyRole::deformable;
   Vec3 velocity = Vec3::Zero();  // prescribed velocity of a driven body, m/s
   MaterialModel model;
+  // Deformable body: its model's history variables' columns in Particles::history, in the
+  // model's order (material_history.hpp); empty for a model without history.
+  std::vector<uint32_t> history_columns;
   // Deformable body with held points: unit vector from the body's centroid toward its held
   // points' centroid (the held face's outward normal), zero when that is undefined.
   Vec3 hold_outward = Vec3::Zero();
@@ -335,6 +339,10 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     }
     std::visit(
         [&](const auto& material) {
+          // The model's history columns (material_history.hpp); none for most models.
+          constexpr size_t history_count = history_size<std::decay_t<decltype(material)>>;
+          Real* history_column[history_count > 0 ? history_count : 1] = {};
+          for (size_t k = 0; k < history_count; ++k) history_column[k] = ps.history[body.history_columns[k]].values.data();
           // Wave speeds grow as J falls (never the other way), so the run's smallest J
           // gives its largest wave speed: one evaluation per run instead of per particle.
           Real min_j = std::numeric_limits<Real>::infinity();
@@ -345,6 +353,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             //    are read back as vectors. Idle lanes (q ≥ n) hold zero mass and volume,
             //    F = I and σ = 0: they add nothing to any sum.
             Pack m{}, v[3] = {}, f_old[3][3], s[6] = {}, volume0{}, record{};
+            Pack history[history_count > 0 ? history_count : 1] = {};
             for (int r = 0; r < 3; ++r)
               for (int c = 0; c < 3; ++c) f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
             for (int q = 0; q < n; ++q) {
@@ -359,6 +368,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
                 volume0[q] = ps.volume0[p];
                 record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
+                for (size_t k = 0; k < history_count; ++k) history[k][q] = history_column[k][p];
               }
             }
             // 1. Interpolate from the grid, particle by particle: new velocity, its change
@@ -426,8 +436,8 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               d.jacobian = F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) -
                            F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
                            F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
-              material.update_stress(d, s);
-              const Pack energy = volume0 * material.strain_energy_density(d, s);
+              update_material_stress(material, d, s, history);
+              const Pack energy = volume0 * material_energy_density(material, d, s, history);
               strain += energy;
               const Pack record_volume = record * d.jacobian * volume0;
               record_stress_volume += s[2] * record_volume;
@@ -443,6 +453,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) Fp(r, c) = F[r][c][q];
                 for (int c = 0; c < 6; ++c) ps.stress[p][c] = s[c][q];
+                for (size_t k = 0; k < history_count; ++k) history_column[k][p] = history[k][q];
               }
             }
           }

@@ -21,8 +21,8 @@ struct ColumnMetrics {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double euler_load = none, k = none;
   double peak_load = none, peak_ratio = none;  // peak / P_E
-  // Mean load over the last quarter of the travel (after buckling), as in
-  // pipelines/column-buckling/summary.sh, and its ratio to P_E.
+  // Mean load over the last quarter of the travel (after buckling), and its ratio to P_E
+  // (computed here only: the column pipeline's summary reads it from metrics.csv).
   double post_buckling_load = none, post_buckling_ratio = none;
   std::vector<std::string> notes;
 };

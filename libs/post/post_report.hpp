@@ -1,6 +1,8 @@
 // latmpm-post's outputs for a set of analysed runs, all in one directory:
 //   curves/<run>.load_displacement.csv, curves/<run>.load_time.csv   (mm, N, ms)
 //   metrics.csv                                                      (one row per run)
+//   checks.csv            (one row per run: energy balance, KE/SE, load ripple; run_checks.hpp)
+//   comparison.csv        (with references: each run's errors against each; run_comparison.hpp)
 //   plots/<figure>.gp, .png, .svg                                    (gnuplot; the .gp stays)
 //   summary.md                                                       (runs, metrics, plots, notes)
 // Every file is written under a temporary name and renamed when whole (core/file_transfer),
@@ -21,6 +23,7 @@ struct ReportContext {
   std::string created_utc;
   std::string title;         // plot and summary title; "" = a default from the kinds
   double euler_k = clamped_clamped_k;
+  std::vector<std::string> references;  // labels of the runs the others are compared with
 };
 
 struct ReportFiles {

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <toml++/toml.h>
 
 #include "core/errors.hpp"
 
@@ -49,6 +50,27 @@ RunStatus parse_run_status(const std::string& log_text, std::string* status_line
   return status;
 }
 
+RunStatus read_run_status_file(const std::string& path, std::string* status_line, std::string* stop_reason) {
+  toml::table status;
+  try {
+    status = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path, "", std::string("not a status file: ") + std::string(e.description()));
+  }
+  const std::string word = status["status"].value_or(std::string());
+  if (word.empty()) throw InputError(path, "status", "missing");
+  const int64_t steps = status["steps"].value_or(int64_t(0));
+  const int64_t exit_status = status["exit"].value_or(int64_t(-1));
+  const std::string reason = status["reason"].value_or(std::string());
+  if (status_line)
+    *status_line = "status.toml: " + word + ", " + std::to_string(steps) + " steps, exit " + std::to_string(exit_status);
+  if (stop_reason) *stop_reason = reason.empty() ? "" : "stopped: " + reason;
+  return word == "finished"                      ? RunStatus::finished
+         : word == "max_steps"                   ? RunStatus::max_steps
+         : word == "failed" || word == "error"   ? RunStatus::failed
+                                                 : RunStatus::unfinished;  // running, interrupted, bad_input
+}
+
 RunDirectory read_run_directory(const std::string& path) {
   if (!fs::is_directory(path)) throw InputError(path, "", "not a run directory (no such directory)");
   for (const char* file : {"series.csv", "scene.toml", "log.txt"})
@@ -57,10 +79,15 @@ RunDirectory read_run_directory(const std::string& path) {
 
   RunDirectory run;
   run.path = path;
-  std::ifstream log(fs::path(path) / "log.txt");
-  std::stringstream text;
-  text << log.rdbuf();
-  run.status = parse_run_status(text.str(), &run.status_line, &run.stop_reason);
+  const fs::path status_file = fs::path(path) / "status.toml";
+  if (fs::is_regular_file(status_file)) {
+    run.status = read_run_status_file(status_file.string(), &run.status_line, &run.stop_reason);
+  } else {  // a run directory of a solver from before status.toml
+    std::ifstream log(fs::path(path) / "log.txt");
+    std::stringstream text;
+    text << log.rdbuf();
+    run.status = parse_run_status(text.str(), &run.status_line, &run.stop_reason);
+  }
   run.series = read_series_csv((fs::path(path) / "series.csv").string());
   for (const char* needed : {"time"})
     if (!run.series.has(needed))

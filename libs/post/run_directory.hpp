@@ -1,5 +1,6 @@
 // One latmpm-solve run directory as post-processing sees it (docs/scene.md, "The run
-// directory"): its series, how it ended (the last line of log.txt), and the specimen facts
+// directory"): its series, how it ended (status.toml; the last status line of log.txt for a
+// run directory written before status.toml existed), and the specimen facts
 // from its resolved scene. A directory without series.csv, scene.toml and log.txt is not a
 // run: InputError naming it (exit 2). A run that failed or never finished is still read — its
 // status says so, and every table and plot marks it.
@@ -36,6 +37,10 @@ struct RunDirectory {
 // missing, and the file's own InputError when series.csv or scene.toml is malformed.
 RunDirectory read_run_directory(const std::string& path);
 
+// The run's status from RUN_DIR/status.toml (latmpm-solve; InputError when it is malformed):
+// finished, max_steps, failed (also "error"); running, interrupted and bad_input are unfinished.
+RunStatus read_run_status_file(const std::string& path, std::string* status_line = nullptr,
+                               std::string* stop_reason = nullptr);
 // The run's status from the text of log.txt (its last "status:" line).
 RunStatus parse_run_status(const std::string& log_text, std::string* status_line = nullptr,
                            std::string* stop_reason = nullptr);

@@ -3,11 +3,15 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/checked_read.hpp"
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
+#include "mpm/checkpoint_io.hpp"
+#include "mpm/particle_fields.hpp"
+#include "mpm/simulation.hpp"
 
 namespace latmpm {
 namespace {
@@ -17,15 +21,15 @@ constexpr double big = std::numeric_limits<double>::max();
 // Ids are a permutation of 0..n-1: the solver orders particles by them.
 void check_permutation(const Hdf5File& f, const std::string& dataset, const std::vector<int64_t>& ids) {
   std::vector<char> seen(ids.size(), 0);
-  for (size_t i = 0; i < ids.size(); ++i) {
-    if (seen[size_t(ids[i])]) throw InputError(f.path(), dataset, "id " + std::to_string(ids[i]) + " appears twice");
-    seen[size_t(ids[i])] = 1;
+  for (int64_t id : ids) {
+    if (seen[size_t(id)]) throw InputError(f.path(), dataset, "id " + std::to_string(id) + " appears twice");
+    seen[size_t(id)] = 1;
   }
 }
 
-// [begin, end) ranges of a table's rows that must lie in [0, limit], begin <= end, and
-// follow each other without gap or overlap from 0 to `limit`. An empty table passes: a run
-// stopped before its first step has not sorted its particles into buckets yet.
+// [begin, end) ranges in column `begin_column` of a table: begin <= end, each continuing the
+// previous one, from 0 to `limit`. An empty table passes: a run stopped before its first step
+// has not sorted its particles into buckets yet.
 void check_ranges(const Hdf5File& f, const std::string& dataset, const std::vector<int64_t>& table, size_t columns,
                   size_t begin_column, int64_t limit, const std::string& what) {
   int64_t expected = 0;
@@ -43,28 +47,38 @@ void check_ranges(const Hdf5File& f, const std::string& dataset, const std::vect
                                             std::to_string(limit));
 }
 
+// A one-value dataset (the checkpoint's scalars).
+double scalar(const Hdf5File& f, const std::string& dataset, ValueRange range = {}) {
+  return read_checked_doubles(f, dataset, {1}, range)[0];
+}
+
 }  // namespace
 
-void check_checkpoint(const Hdf5File& f, const CheckpointShape& s) {
+void check_checkpoint(const Hdf5File& f, const mpm::Simulation& sim) {
   const std::string g = "/state";
-  const size_t n = s.particles, nb = s.bodies, nr = s.rigid_bodies;
+  const mpm::CheckpointReader format_checked(f, g);  // refuses another format version first
+  const size_t n = sim.particles().size(), nb = sim.bodies().size(), nr = sim.rigid_bodies().size();
   const int64_t last_body = int64_t(nb) - 1;
 
-  // Particles: one row each.
-  read_checked_doubles(f, g + "/particles/position", {n, 3});
-  read_checked_doubles(f, g + "/particles/velocity", {n, 3});
-  read_checked_doubles(f, g + "/particles/mass", {n}, {0, big});
-  read_checked_doubles(f, g + "/particles/volume0", {n}, {0, big});
-  read_checked_doubles(f, g + "/particles/deformation", {n, 9});
-  read_checked_doubles(f, g + "/particles/stress", {n, 6});
-  read_checked_doubles(f, g + "/particles/half_size0", {n, 3}, {0, big});
-  read_checked_integers(f, g + "/particles/body", {n}, 0, last_body);
-  check_permutation(f, g + "/particles/id", read_checked_integers(f, g + "/particles/id", {n}, 0, int64_t(n) - 1));
-  read_checked_integers(f, g + "/particles/flags", {n}, 0, 255);
-  if (f.exists(g + "/particles/contact_body")) {
-    read_checked_integers(f, g + "/particles/contact_body", {n}, -1, int64_t(nr) - 1);
-    read_checked_doubles(f, g + "/particles/contact_anchor", {n, 3});
-  }
+  // Particles: every field of the registry, one row each, finite; indices within their tables.
+  const std::string p = g + "/particles/";
+  mpm::for_each_particle_field(sim.particles(), [&](const mpm::ParticleField& field, const auto& values, const auto&) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    const std::string name = field.name, dataset = p + name;
+    if (field.optional && values.empty()) return;
+    if (!f.exists(dataset)) return;  // mpm's reader names a missing field with its reason
+    if constexpr (std::is_integral_v<T>) {
+      if (name == "body") read_checked_integers(f, dataset, {n}, 0, last_body);
+      if (name == "id") check_permutation(f, dataset, read_checked_integers(f, dataset, {n}, 0, int64_t(n) - 1));
+      if (name == "flags") read_checked_integers(f, dataset, {n}, 0, 255);
+      if (name == "contact_body") read_checked_integers(f, dataset, {n}, -1, int64_t(nr) - 1);
+    } else {
+      constexpr size_t components = size_t(mpm::CheckpointCodec<T>::components);
+      const std::vector<size_t> shape = components == 1 ? std::vector<size_t>{n} : std::vector<size_t>{n, components};
+      const bool non_negative = name == "mass" || name == "volume0" || name == "half_size0";
+      read_checked_doubles(f, dataset, shape, non_negative ? ValueRange{0, big} : ValueRange{});
+    }
+  });
 
   // Buckets and runs: contiguous particle ranges; each bucket's runs a contiguous range of runs.
   const auto runs = read_checked_integers(f, g + "/buckets/runs", {any_extent, 3}, 0, int64_t(n));
@@ -78,25 +92,25 @@ void check_checkpoint(const Hdf5File& f, const CheckpointShape& s) {
                                              std::numeric_limits<int32_t>::max() / 8);
   check_ranges(f, g + "/buckets/buckets", buckets, 7, 3, int64_t(n), "particle");
   check_ranges(f, g + "/buckets/buckets", buckets, 7, 5, int64_t(runs.size() / 3), "run");
-  read_checked_integer_attribute(f, g + "/buckets/buckets", "needs_sort", 0, 1);
+  read_checked_integers(f, g + "/buckets/needs_sort", {1}, 0, 1);
 
-  // Solver: per body, the scalars (step, time and time steps non-negative), rigid bodies.
-  read_checked_doubles(f, g + "/solver/body_displacement", {nb, 3});
-  read_checked_doubles(f, g + "/solver/reaction", {nb, 3});
-  read_checked_doubles(f, g + "/solver/initial_centre", {nb, 3});
-  const auto scalars = read_checked_doubles(f, g + "/solver/scalars", {18});
-  const char* const names[] = {"step", "time", "dt", "stable dt"};
-  for (int i = 0; i < 4; ++i)
-    if (scalars[size_t(i)] < 0 || (i == 0 && scalars[0] > 9.0e15))
-      throw InputError(f.path(), g + "/solver/scalars", std::string(names[i]) + " is " + std::to_string(scalars[i]));
-  for (const char* dataset : {"/rigid/displacement", "/rigid/velocity", "/rigid/reaction"})
-    read_checked_doubles(f, g + dataset, {nr, 3});
+  // Solver: step, time and time steps non-negative, every scalar finite, per-body rows.
+  const int64_t step = read_checked_integers(f, g + "/solver/step", {1}, 0, std::numeric_limits<int64_t>::max())[0];
+  for (const char* name : {"time", "dt", "stable_dt"}) scalar(f, g + "/solver/" + name, {0, big});
+  for (const char* name : {"record_force", "kinetic_energy", "strain_energy", "external_work", "max_speed",
+                           "constraint_work", "gravity_work", "rigid_energy", "energy_error", "carried_max_speed",
+                           "carried_max_wave_speed", "initial_energy", "initial_rigid_energy", "driven_rigid_work"})
+    if (f.exists(g + "/solver/" + name)) scalar(f, g + "/solver/" + name);
+  for (const char* name : {"/solver/body_displacement", "/solver/reaction", "/solver/initial_centre"})
+    read_checked_doubles(f, g + name, {nb, 3});
+  for (const char* name : {"/rigid/displacement", "/rigid/velocity", "/rigid/reaction"})
+    read_checked_doubles(f, g + name, {nr, 3});
   read_checked_doubles(f, g + "/rigid/work", {nr});
 
   // Outputs: the snapshots written so far.
   const size_t frames = read_checked_strings(f, "/output/frame_files").size();
   read_checked_doubles(f, "/output/frame_times", {frames}, {0, big});
-  read_checked_integers(f, "/output/frame_steps", {frames}, 0, int64_t(scalars[0]));
+  read_checked_integers(f, "/output/frame_steps", {frames}, 0, step);
   read_checked_integers(f, "/output/frame_points", {frames}, 0, int64_t(n));
   read_checked_double_attribute(f, "/output", "wall_seconds", {0, big});
 }

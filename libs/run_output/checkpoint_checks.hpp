@@ -3,21 +3,19 @@
 // within the table it points into (bodies, particles, buckets, runs). A corrupted but
 // well-formed file (a few rows short, an index out of range, a NaN time) is refused with one
 // InputError naming the dataset, instead of crashing the run or continuing it wrongly.
-// Uses core/checked_read.hpp; the layout is Simulation::save_state's (libs/mpm) and
-// SolveRun's /output group.
+// Uses core/checked_read.hpp over the layout of Simulation::save_state (named datasets,
+// libs/mpm/checkpoint_io.hpp; the particle fields from the registry, particle_fields.hpp)
+// and SolveRun's /output group. The format version is checked by mpm's CheckpointReader.
 #pragma once
-#include <cstddef>
 
 namespace latmpm {
 
 class Hdf5File;
+namespace mpm {
+class Simulation;
+}
 
-struct CheckpointShape {
-  size_t particles = 0;     // points of the scene
-  size_t bodies = 0;        // scene bodies
-  size_t rigid_bodies = 0;  // [rigid_bodies]
-};
-
-void check_checkpoint(const Hdf5File& file, const CheckpointShape& shape);
+// `simulation` is the scene's, set up and not yet stepped: it gives the counts and fields.
+void check_checkpoint(const Hdf5File& file, const mpm::Simulation& simulation);
 
 }  // namespace latmpm

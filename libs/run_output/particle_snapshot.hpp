@@ -19,6 +19,12 @@ struct ParticleSnapshot {
   std::vector<float> jacobian;    // N, J = det F
   std::vector<int32_t> body;      // N, index into body_names
   std::vector<std::string> body_names;
+  // Further per-point scalars by name (the solver's material history columns), N each.
+  struct Scalar {
+    std::string name;
+    std::vector<float> values;
+  };
+  std::vector<Scalar> extra_scalars;
 
   size_t size() const { return body.size(); }
   // Sizes the arrays for n points.

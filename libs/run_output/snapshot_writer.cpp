@@ -68,6 +68,7 @@ void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& pa
     file.write("/particles/von_mises", s.von_mises, {n});
     file.write("/particles/J", s.jacobian, {n});
     file.write("/particles/body", s.body, {n});
+    for (const auto& scalar : s.extra_scalars) file.write("/particles/" + scalar.name, scalar.values, {n});
     file.write_strings("/particles/body_names", s.body_names);
     file.set_attribute("/particles", "time", s.time);
     file.set_attribute("/particles", "step", int64_t(s.step));
@@ -81,13 +82,21 @@ void SnapshotWriter::write_index(const std::vector<XdmfFrame>& frames, const std
   write_file_atomically(path, xdmf_time_series(frames), path);
 }
 
+namespace {
+std::vector<std::string> extra_scalar_names(const ParticleSnapshot& s) {
+  std::vector<std::string> names;
+  for (const auto& scalar : s.extra_scalars) names.push_back(scalar.name);
+  return names;
+}
+}  // namespace
+
 std::string SnapshotWriter::write(const ParticleSnapshot& s) {
   char name[32];
   std::snprintf(name, sizeof name, "snap_%06lld.h5", static_cast<long long>(s.step));
   const std::string relative = std::string("snapshots/") + name;
   write_file(s, run_dir_ + "/" + relative);
   if (!frames_.empty() && frames_.back().step == s.step) frames_.pop_back();
-  frames_.push_back({relative, s.time, s.step, s.size()});
+  frames_.push_back({relative, s.time, s.step, s.size(), extra_scalar_names(s)});
   write_index(frames_, xdmf_path());
   return run_dir_ + "/" + relative;
 }
@@ -95,7 +104,7 @@ std::string SnapshotWriter::write(const ParticleSnapshot& s) {
 std::string SnapshotWriter::write_separate(const ParticleSnapshot& s, const std::string& stem) {
   const std::string relative = "snapshots/" + stem + ".h5";
   write_file(s, run_dir_ + "/" + relative);
-  write_index({{relative, s.time, s.step, s.size()}}, run_dir_ + "/" + stem + ".xmf");
+  write_index({{relative, s.time, s.step, s.size(), extra_scalar_names(s)}}, run_dir_ + "/" + stem + ".xmf");
   return run_dir_ + "/" + relative;
 }
 

@@ -13,9 +13,11 @@
 #include "core/interruption.hpp"
 #include "run_output/checkpoint_checks.hpp"
 #include "core/progress.hpp"
+#include "core/tool_main.hpp"
 #include "mpm/simulation.hpp"
 #include "points/point_set.hpp"
 #include "run_output/run_log.hpp"
+#include "run_output/run_status.hpp"
 #include "run_output/scene_simulation.hpp"
 #include "run_output/snapshot_writer.hpp"
 #include "run_output/solver_series.hpp"
@@ -80,18 +82,28 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   const std::string checkpoint_path = run_dir + "/checkpoint.h5";
   std::vector<XdmfFrame> kept_frames;
   double wall_before = 0;
+  RunOutcome before;  // the earlier parts of a resumed run: their wall and CPU time
   if (options_.resume) {
     if (!fs::is_regular_file(checkpoint_path))
       throw InputError(checkpoint_path, "", "no checkpoint to resume from (the run wrote none)");
     Hdf5File file(checkpoint_path, Hdf5File::Mode::read);
-    check_checkpoint(file, {sim.particles().size(), sim.bodies().size(), sim.rigid_bodies().size()});
+    check_checkpoint(file, sim);
     sim.load_state(file, "/state");
     const auto names = file.read_strings("/output/frame_files");
     const auto times = file.read_doubles("/output/frame_times");
     const auto steps = file.read_int64("/output/frame_steps");
     const auto points = file.read_int64("/output/frame_points");
-    for (size_t i = 0; i < names.size(); ++i) kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i])});
+    // The frames' extra scalars are the run's material history columns, the same in every frame.
+    std::vector<std::string> history;
+    for (const auto& column : sim.particles().history) history.push_back(column.name);
+    for (size_t i = 0; i < names.size(); ++i)
+      kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i]), history});
     wall_before = file.double_attribute("/output", "wall_seconds");
+    before.stepping_wall_seconds = wall_before;
+    if (file.has_attribute("/output", "cpu_seconds")) {  // checkpoints written since status.toml
+      before.cpu_seconds = file.double_attribute("/output", "cpu_seconds");
+      before.wall_seconds = file.double_attribute("/output", "process_wall_seconds");
+    }
   } else {
     // A checkpoint left by an earlier run in this directory is not this run's state: resuming
     // from it after this run is stopped would splice two runs together.
@@ -177,6 +189,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       file.write("/output/frame_steps", steps, {steps.size()});
       file.write("/output/frame_points", points, {points.size()});
       file.set_attribute("/output", "wall_seconds", wall_before + wall);
+      file.set_attribute("/output", "cpu_seconds", before.cpu_seconds + process_cpu_seconds());
+      file.set_attribute("/output", "process_wall_seconds", before.wall_seconds + process_wall_seconds());
       file.set_attribute("/output", "step", int64_t(sim.step_count()));
       file.set_attribute("/output", "time", sim.time());
       file.close();
@@ -196,6 +210,19 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const double wall = seconds_since(start);
     return wall > 0 ? double(particles) * double(sim.step_count() - first_step) / wall : 0.0;
   };
+  // status.toml: "running" now, how the run ended at the end (run_status.hpp).
+  auto outcome = [&](const std::string& status, int exit_status, const std::string& reason) {
+    RunOutcome o = outcome_without_run(status, exit_status, reason);
+    o.steps = sim.step_count();
+    o.simulated_time = sim.time();
+    o.points = particles;
+    o.wall_seconds += before.wall_seconds;
+    o.cpu_seconds += before.cpu_seconds;
+    o.stepping_wall_seconds = wall_before + seconds_since(start);
+    o.updates_per_second = rate();
+    return o;
+  };
+  write_run_status(run_dir, outcome("running", -1, ""), provenance_);
   auto status_text = [&] {
     return "step " + std::to_string(sim.step_count()) + ", t = " + format("%.4g", sim.time()) + " s, " +
            format("%.3g", rate()) + " particle-updates/s";
@@ -250,7 +277,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   } catch (const std::exception& e) {
     // Keep everything readable: the series as far as it got, the state at the failure.
     const bool numerical = dynamic_cast<const NumericalError*>(&e) != nullptr;
-    log.line(std::string("stopped: ") + (numerical ? "numerical failure: " : "error: ") + e.what());
+    const std::string reason = std::string(numerical ? "numerical failure: " : "error: ") + e.what();
+    log.line("stopped: " + reason);
     try {
       series.save();
       // Apart from the time series: the failure may have struck mid-step, so this state
@@ -263,6 +291,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     }
     log.line("status: failed steps=" + std::to_string(sim.step_count()) + " time=" +
              format("%.9g", sim.time()) + " wall_s=" + format("%.3f", seconds_since(start)));
+    write_run_status(run_dir, outcome(numerical ? "failed" : "error", numerical ? exit_numerical : exit_internal, reason),
+                     provenance_);
     throw;
   }
 
@@ -278,6 +308,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   log.line("status: " + result.status + " steps=" + std::to_string(result.steps) + " time=" +
            format("%.9g", result.simulated_time) + " wall_s=" + format("%.3f", result.wall_seconds) +
            " updates_per_s=" + format("%.4g", result.updates_per_second));
+  const std::string reason = result.status == "max_steps" ? "run.max_steps reached"
+                             : result.signal           ? std::string("stopped by ") + signal_name(result.signal)
+                                                       : "";
+  write_run_status(run_dir, outcome(result.status, result.signal ? exit_signal_base + result.signal : exit_ok, reason),
+                   provenance_);
   return result;
 }
 

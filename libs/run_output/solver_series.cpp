@@ -1,5 +1,7 @@
 #include "run_output/solver_series.hpp"
 
+#include "mpm/particle_fields.hpp"
+
 namespace latmpm {
 
 std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
@@ -112,6 +114,15 @@ ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) {
     s.jacobian[i] = float(p.jacobian(q));
     s.body[i] = p.body[q];
   }
+  // The registry's snapshot fields beyond the fixed ones: the material history columns.
+  mpm::for_each_particle_field(p, [&](const mpm::ParticleField& field, const auto& values, const auto&) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(values)>, std::vector<mpm::Real>>) {
+      if (!field.snapshot) return;
+      ParticleSnapshot::Scalar scalar{field.name, std::vector<float>(n)};
+      for (size_t q = 0; q < n; ++q) scalar.values[p.id[q]] = float(values[q]);
+      s.extra_scalars.push_back(std::move(scalar));
+    }
+  });
   return s;
 }
 

@@ -57,6 +57,11 @@ std::string xdmf_time_series(const std::vector<XdmfFrame>& frames) {
         << "\" NumberType=\"" << field.number_type << "\" Precision=\"" << field.precision
         << "\" Format=\"HDF\">" << f.hdf5_file << ":" << field.dataset << "</DataItem>\n"
         << "        </Attribute>\n";
+    for (const std::string& name : f.extra_scalars)
+      x << "        <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+        << "          <DataItem Dimensions=\"" << dims(f.points, 1) << "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">"
+        << f.hdf5_file << ":/particles/" << name << "</DataItem>\n"
+        << "        </Attribute>\n";
     x << "      </Grid>\n";
   }
   x << "    </Grid>\n  </Domain>\n</Xdmf>\n";

@@ -12,6 +12,8 @@ struct XdmfFrame {
   double time = 0;        // s
   int64_t step = 0;
   size_t points = 0;
+  // Per-point scalars beyond the fixed fields (material history: /particles/<name>, float).
+  std::vector<std::string> extra_scalars;
 };
 
 // The whole .xmf text for these frames, with the fields a ParticleSnapshot writes.

@@ -21,6 +21,11 @@ const char* to_string(ShapeKind shape);
 const char* to_string(SchemeKind scheme);
 const char* to_string(MaterialModel model);
 
+// What a scene can choose (latmpm-solve --list CHOICE), one name a line, from the reader's own
+// tables: "shapes" (grid.shape), "schemes" (grid.scheme), "materials" (material.model),
+// "boundaries" (the KEY=VALUE choices of fixed, driven and rigid bodies). Empty for another word.
+std::vector<std::string> scene_choice_names(const std::string& choice);
+
 // A rigid body given by its geometry ([rigid_bodies.<name>]): no points, no mass on the grid.
 struct RigidBodySpec {
   enum Shape { box, half_space } shape = box;

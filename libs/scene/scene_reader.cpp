@@ -34,6 +34,9 @@ constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKi
                                     ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp};
 constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
 constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean};
+const std::vector<std::string> rigid_motions = {"driven", "free", "fixed"};
+const std::vector<std::string> rigid_shapes = {"box", "half_space"};
+const std::vector<std::string> rigid_contacts = {"no_slip", "penalty"};
 
 void read_run(TableReader run, Scene& s) {
   TableReader end = run.table("end");
@@ -162,7 +165,7 @@ void read_bodies(TableReader bodies, Scene& s) {
 void read_rigid_contact(TableReader& b, RigidBodySpec& body) {
   auto contact = b.optional_table("contact");
   if (!contact) return;
-  body.contact = contact->choice("model", {"no_slip", "penalty"}, "no_slip") == "penalty" ? RigidBodySpec::penalty
+  body.contact = contact->choice("model", rigid_contacts, "no_slip") == "penalty" ? RigidBodySpec::penalty
                                                                                           : RigidBodySpec::no_slip;
   if (body.contact == RigidBodySpec::no_slip) {
     for (const char* key : {"friction", "stiffness"})
@@ -190,12 +193,12 @@ void read_rigid_bodies(TableReader rigid, Scene& s) {
     TableReader b = rigid.table(name);
     RigidBodySpec body;
     body.name = name;
-    const std::string motion = b.choice("motion", {"driven", "free", "fixed"}, "");
+    const std::string motion = b.choice("motion", rigid_motions, "");
     body.where = b.where("motion");
     body.motion = motion == "free"    ? RigidBodySpec::free
                   : motion == "fixed" ? RigidBodySpec::fixed
                                       : RigidBodySpec::driven;
-    body.shape = b.choice("shape", {"box", "half_space"}, "box") == "box" ? RigidBodySpec::box
+    body.shape = b.choice("shape", rigid_shapes, "box") == "box" ? RigidBodySpec::box
                                                                           : RigidBodySpec::half_space;
     if (body.shape == RigidBodySpec::box) {
       body.min = b.vector("min", dimension::length);
@@ -262,6 +265,20 @@ void check_consistency(const Scene& s) {
 }
 
 }  // namespace
+
+std::vector<std::string> scene_choice_names(const std::string& choice) {
+  if (choice == "shapes") return names_of(all_shapes);
+  if (choice == "schemes") return names_of(all_schemes);
+  if (choice == "materials") return names_of(all_models);
+  if (choice != "boundaries") return {};
+  std::vector<std::string> names;
+  for (BodyRole role : all_roles)
+    if (role != BodyRole::deformable) names.push_back(std::string("bodies.role=") + to_string(role));
+  for (const auto& m : rigid_motions) names.push_back("rigid_bodies.motion=" + m);
+  for (const auto& m : rigid_shapes) names.push_back("rigid_bodies.shape=" + m);
+  for (const auto& m : rigid_contacts) names.push_back("rigid_bodies.contact.model=" + m);
+  return names;
+}
 
 const char* to_string(BodyRole role) {
   switch (role) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Appends to OUT_DIR/summary.md (written by latmpm-post) the set-up notes (a Markdown file)
-# and a table of the runs' cost: points, steps, wall and CPU time, particle-updates per second
-# (from each RUN_DIR/wall_time.txt, pipelines/common/solve-case.sh); also OUT_DIR/runs.csv.
+# and a table of the runs' cost as each RUN_DIR/status.toml records it (latmpm-solve writes it
+# at the end of every run: points, steps, wall and CPU time over all parts of a resumed run,
+# particle-updates per second, peak memory); also OUT_DIR/runs.csv.
 # usage: append-runs.sh OUT_DIR NOTES.md LABEL=RUN_DIR...
 set -euo pipefail
 out=$1 notes=$2
@@ -13,19 +14,22 @@ csv="$out/runs.csv"
   echo
   echo "## Cost of each run"
   echo
-  echo "Measured by the pipeline (\`wall_time.txt\` in each run directory; CPU = user + system)."
+  echo "As each run's \`status.toml\` records it (latmpm-solve; CPU = user + system, the whole process)."
   echo
-  echo "| run | points | steps | wall (s) | CPU (s) | particle-updates/s |"
-  echo "|---|---|---|---|---|---|"
+  echo "| run | status | points | steps | wall (s) | CPU (s) | particle-updates/s | peak memory (MB) |"
+  echo "|---|---|---|---|---|---|---|---|"
 } >> "$out/summary.md"
-echo "run,points,steps,wall[s],cpu[s],updates_per_s" > "$csv.tmp"
+echo "run,status,points,steps,wall[s],cpu[s],updates_per_s,peak_memory[MB]" > "$csv.tmp"
 for label_run in "$@"; do
   name=${label_run%%=*} run=${label_run#*=}
-  awk -F= -v name="$name" -v csv="$csv.tmp" -v md="$out/summary.md" '
-    { v[$1] = $2 }
+  awk -v name="$name" -v csv="$csv.tmp" -v md="$out/summary.md" '
+    # key = value lines of a flat TOML table; strings lose their quotes
+    /^[a-z_]+ = / { k = $1; v = substr($0, length(k) + 4); gsub(/^"|"$/, "", v); s[k] = v }
     END {
-      printf "| %s | %s | %s | %s | %s | %.3g |\n", name, v["points"], v["steps"], v["wall_s"], v["cpu_s"], v["updates_per_s"] >> md
-      printf "%s,%s,%s,%s,%s,%s\n", name, v["points"], v["steps"], v["wall_s"], v["cpu_s"], v["updates_per_s"] >> csv
-    }' "$run/wall_time.txt"
+      printf "| %s | %s | %s | %s | %.1f | %.1f | %.3g | %.0f |\n", name, s["status"], s["points"], s["steps"],
+        s["wall_s"], s["cpu_s"], s["updates_per_s"], s["peak_memory_mb"] >> md
+      printf "%s,%s,%s,%s,%.1f,%.1f,%.4g,%.0f\n", name, s["status"], s["points"], s["steps"],
+        s["wall_s"], s["cpu_s"], s["updates_per_s"], s["peak_memory_mb"] >> csv
+    }' "$run/status.toml"
 done
 mv "$csv.tmp" "$csv"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The expected outcome of one extremes case (pipelines/extremes.mk) against what happened.
 # Prints a Markdown section (expected, observed, PASS); exits 1 when the outcome differs.
-# Reads the run directories' series.csv (docs/scene.md) and latmpm-post's metrics.csv
-# (docs/post.md) under OUT_DIR.
+# Reads latmpm-post's metrics.csv and checks.csv (docs/post.md) under OUT_DIR: every number
+# is computed there; this script only compares.
 # usage: check.sh CASE OUT_DIR
 set -euo pipefail
 case_name=$1 out=$2
@@ -15,22 +15,13 @@ metric() {
     !h { for (i = 1; i <= NF; i++) { n = $i; sub(/\[.*/, "", n); c[n] = i } h = 1; next }
     $1 == label { print $c[name] }' "$1"
 }
-# energy RUN_DIR: "balance strain_at_5pct max_ke_over_se_second_half" from series.csv:
-# balance = |KE + SE - W| / W at the last row; the strain (travel / H) where the balance
-# error first passes 5 % (H = argument 2; "never"); KE/SE over the second half.
+# energy POST_DIR LABEL: "balance strain_at_5pct max_ke_over_se_second_half" of a run, from
+# latmpm-post's checks.csv (docs/post.md "Checks"): the energy balance error |KE + SE - W| / W
+# at the end, the strain where it first passes 5 % ("never"), KE/SE over the second half.
 energy() {
-  awk -F, -v H="$2" '
-    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-    { n++; u[n] = $c["displacement[m]"]; k[n] = $c["kinetic_energy[J]"]; s[n] = $c["strain_energy[J]"]; w[n] = $c["external_work[J]"] }
-    END {
-      first = "never"
-      for (i = 1; i <= n; i++) {
-        if (w[i] > 1e-3 * w[n] && first == "never" && (k[i] + s[i] - w[i]) ^ 2 > (0.05 * w[i]) ^ 2) first = sprintf("%.2f", u[i] / H)
-        if (u[i] >= 0.5 * u[n] && s[i] > 0 && k[i] / s[i] > r) r = k[i] / s[i]
-      }
-      b = (k[n] + s[n] - w[n]) / w[n]; if (b < 0) b = -b
-      printf "%.4f %s %.4g\n", b, first, r
-    }' "$1/series.csv"
+  local first
+  first=$(metric "$1/checks.csv" "$2" balance_5pct_strain)
+  echo "$(metric "$1/checks.csv" "$2" energy_balance_error) ${first:-never} $(metric "$1/checks.csv" "$2" ke_over_se)"
 }
 # check DESCRIPTION CONDITION(awk expression): one observed line, PASS or FAIL.
 check() {
@@ -45,10 +36,7 @@ slender)
   peak=$(metric "$m" slender peak_to_euler); post=$(metric "$m" slender post_buckling_to_euler)
   euler=$(metric "$m" slender euler_load)
   # Ripple: root-mean-square of the load about its mean over the last quarter of the travel.
-  ripple=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-    { n++; u[n] = $c["displacement[m]"]; f[n] = $c["load_driven[N]"] }
-    END { for (i = 1; i <= n; i++) if (u[i] >= 0.75 * u[n]) { s += f[i]; q += f[i] ^ 2; m++ }
-          printf "%.4g", sqrt(q / m - (s / m) ^ 2) }' "$out/run-slender/series.csv")
+  ripple=$(metric "$out/post-slender/checks.csv" slender load_ripple)
   ripple_ratio=$(awk "BEGIN { printf \"%.2f\", $ripple / $euler }")
   echo "Column t = 0.8 mm, L = 16 mm (L/t = 20), a = 0.02 L, cell 0.2 mm (8 points across), 100 mm/s."
   echo "Expected: finishes (no J <= 0, no runaway); the post-buckling load (mean over the last quarter"
@@ -62,7 +50,7 @@ slender)
   check "post-buckling / Euler = $post in [0.85, 1.15]" "$post >= 0.85 && $post <= 1.15"
   ;;
 stiff-fast)
-  read -r balance first kese < <(energy "$out/run-stiff-fast" 0.009333)
+  read -r balance first kese < <(energy "$out/post-stiff-fast" stiff-fast)
   peak=$(metric "$out/post-stiff-fast/metrics.csv" stiff-fast peak_load)
   echo "T2P30 2x2x1, E = 100 MPa, real density (no mass scaling), the plate driven at 4 m/s"
   echo "(twice paper A's impact speed) for 4 mm. A driven plate, not a free flyer."
@@ -74,8 +62,8 @@ stiff-fast)
 densify|densify-linear)
   m="$out/post-$case_name/metrics.csv"
   onset=$(metric "$m" "$case_name" densification_strain); plateau=$(metric "$m" "$case_name" plateau_load)
-  read -r balance first kese < <(energy "$out/run-$case_name" 0.009333)
-  final=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } { f = $c["load_driven[N]"] } END { printf "%.4g", f }' "$out/run-$case_name/series.csv")
+  read -r balance first kese < <(energy "$out/post-$case_name" "$case_name")
+  final=$(metric "$out/post-$case_name/checks.csv" "$case_name" final_load)
   model=$([ "$case_name" = densify ] && echo neo-Hookean || echo "linear elastic")
   echo "T2P30 2x2x1 (H = 9.33 mm) compressed 8.4 mm = 90 % strain, $model, cell 1 mm."
   echo "Observed: densification onset at strain ${onset:-none}, plateau load $plateau N, final load $final N,"
@@ -123,7 +111,7 @@ mass-scaling)
   echo "|---|---|---|"
   flagged=""
   for ms in 6 100 1000 10000; do
-    read -r balance first kese < <(energy "$out/run-ms$ms" 0.009333)
+    read -r balance first kese < <(energy "$out/post-mass-scaling" "ms$ms")
     verdict=$(awk "BEGIN { print ($kese > 0.1) ? \"not quasi-static\" : \"quasi-static\" }")
     [ -z "$flagged" ] && [ "$verdict" = "not quasi-static" ] && flagged=$ms
     echo "| $ms | $kese | $verdict |"

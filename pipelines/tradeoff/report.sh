@@ -1,34 +1,45 @@
 #!/usr/bin/env bash
 # The trade-off table and Pareto plot: for every run of OUT_DIR/knobs.txt (written by
-# pipelines/tradeoff.mk, one FAMILY:NAME:CELL:PPC:SHAPE:MASS_SCALING:SPEED:SCHEME per line, the
-# reference run first in each family), its cost (OUT_DIR/FAMILY/run-NAME/wall_time.txt) and
-# its errors against the reference (errors.sh). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
+# pipelines/tradeoff.mk, one FAMILY:NAME per line, the reference run first in each family;
+# its cell, points per cell, shape, scheme, mass scaling and speed are its row of
+# pipelines/tradeoff/FAMILY.txt), its cost (OUT_DIR/FAMILY/run-NAME/status.toml) and its
+# errors against the reference and the base case, as latmpm-post computed them
+# (OUT_DIR/FAMILY/comparison.csv, latmpm-post --reference ref --reference base; definitions in
+# docs/post.md "Comparing runs"). Writes OUT_DIR/errors.csv, OUT_DIR/pareto.gp,
 # pareto.png, pareto.svg (when gnuplot is there) and OUT_DIR/summary.md.
 # usage: report.sh OUT_DIR
 set -euo pipefail
 out=$1
 here=$(dirname "$0")
-euler_column=0.4961   # N: pi^2 E I / (K L)^2, E = 10 MPa, t = 1.6 mm, L = 16 mm, K = 0.5
 csv="$out/errors.csv"
 echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status,curve_change_vs_base" > "$csv.tmp"
-while IFS=: read -r family name cell ppc shape ms speed scheme; do
+# status KEY RUN_DIR: a value of RUN_DIR/status.toml (latmpm-solve), strings without quotes.
+status() { sed -n "s/^$1 = //p" "$2/status.toml" | sed 's/^"\(.*\)"$/\1/'; }
+while IFS=: read -r family name; do
   [ -n "$family" ] || continue
   run="$out/$family/run-$name"
-  [ "$name" = ref ] && ref=$run
-  [ "$name" = ref ] && base="$out/$family/run-base"
-  cost=$(awk -F= '{ v[$1] = $2 } END { printf "%s,%s,%s,%s", v["points"], v["steps"], v["cpu_s"], v["wall_s"] }' "$run/wall_time.txt")
-  status=$(sed -n 's/^status=//p' "$run/wall_time.txt"); status=${status:-finished}
-  if [ "$status" = failed ]; then
+  # The knobs from the solver arguments of the row (KEY=VALUE words; scheme USL unless set).
+  words=$(bash "$here/../common/case-table.sh" args "$here/$family.txt" "$name" "$out/$family" | paste -sd' ')
+  knob() { echo "$words" | tr ' ' '\n' | sed -n "s/^$1=//p" | tail -1; }
+  cell=$(knob grid.cell); cell=${cell%mm}
+  ppc=$(knob points.0.file); ppc=${ppc##*-p}; ppc=${ppc%.h5}
+  shape=$(knob grid.shape); scheme=$(knob grid.scheme); scheme=${scheme:-usl}
+  ms=$(knob time.mass_scaling)
+  speed=$(knob bodies.top_plate.velocity | sed 's/.*"-\([0-9.]*\)mm\/s"\]$/\1/')
+  cost="$(status points "$run"),$(status steps "$run"),$(printf %.1f "$(status cpu_s "$run")"),$(printf %.1f "$(status wall_s "$run")")"
+  ended=$(status status "$run")
+  if [ "$ended" = failed ]; then
     # A numerical failure: no errors, the step and the reason in short.
     errors=",,,,"
     change=""
-    status="failed at $(sed -n 's/^reason=numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p' "$run/wall_time.txt")"
+    ended="failed at $(status reason "$run" | sed -n 's/^numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p')"
   else
-    errors=$(bash "$here/errors.sh" "$ref" "$run" "$family" "$([ "$family" = column ] && echo $euler_column || echo 0)")
-    # The change against the base case isolates the knob from the base's own error.
-    change=$(bash "$here/errors.sh" "$base" "$run" "$family" 0 | cut -d, -f1)
+    # comparison.csv: reference,label,curve,peak,late,euler,ke_over_se. The change against the
+    # base case isolates the knob from the base's own error.
+    errors=$(awk -F, -v run="$name" '$1 == "ref" && $2 == run { print $3 "," $4 "," $5 "," $6 "," $7 }' "$out/$family/comparison.csv")
+    change=$(awk -F, -v run="$name" '$1 == "base" && $2 == run { print $3 }' "$out/$family/comparison.csv")
   fi
-  echo "$family,$name,$cell,$ppc,$shape${scheme:+ ($scheme)},$ms,$speed,$cost,$errors,$status,$change" >> "$csv.tmp"
+  echo "$family,$name,$cell,$ppc,$shape${scheme:+ ($scheme)},$ms,$speed,$cost,$errors,$ended,$change" >> "$csv.tmp"
 done < "$out/knobs.txt"
 mv "$csv.tmp" "$csv"
 
@@ -63,9 +74,9 @@ fi
   echo "Made by \`make tradeoff\` (pipelines/tradeoff.mk) on $(date -u +%Y-%m-%d). Cost: CPU time of"
   echo "the solver (user + system, one thread per run under \`make -j2\`) and wall time. Errors"
   echo "against each family's reference (\`ref\`, the finest run), definitions in"
-  echo "pipelines/tradeoff/errors.sh: curve = relative L2 difference of the binned"
-  echo "load-displacement curves; peak = peak load; late = post-buckling load (column) or work"
-  echo "∫F du (lattice); Euler = column post-buckling load against the Euler load 0.4961 N;"
+  echo "docs/post.md (\"Comparing runs\", computed by latmpm-post --reference): curve = relative L2"
+  echo "difference of the binned load-displacement curves; peak = peak load; late = post-buckling"
+  echo "load (column) or work ∫F du (lattice); Euler = column post-buckling load against the Euler load;"
   echo "KE/SE = largest kinetic / strain energy over the second half of the travel; curve change vs"
   echo "base = the curve error of the run against the base case (the knob's own effect)."
   echo

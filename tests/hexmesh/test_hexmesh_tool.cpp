@@ -60,6 +60,9 @@ TEST_CASE("latmpm-hexmesh refuses bad input with status 2 and one line, leaving 
   CHECK(s.run("--cylinder --diameter 4mm --height 4mm --cell 0.4mm -o x.h5") == 1);
   CHECK(s.stderr_text().find("--level") != std::string::npos);
   CHECK(s.run("--cylinder --diameter -4mm --height 4mm --level 1 --cell 0.4mm -o x.h5") == 2);
+  CHECK(s.stderr_text().find("--diameter") != std::string::npos);
+  CHECK(s.run("--cylinder --diameter 4mm --height 4mm --level 13 --cell 0.4mm -o x.h5") == 2);
+  CHECK(s.stderr_text().find("--level") != std::string::npos);
   CHECK(s.run("missing.msh --units mm --cell 0.4mm -o x.h5") == 2);
   CHECK(s.stderr_text().find("missing.msh") != std::string::npos);
   CHECK(s.run("--cylinder --diameter 4mm --height 4mm --divisions 2,x,3 --cell 0.4mm -o x.h5") == 2);

@@ -262,6 +262,32 @@ TEST_CASE("Plastic flow is isochoric: det Fp = det F / sqrt(det be) stays 1", "[
   CHECK(dissipated > p.initial_yield * state.plastic_arc_length);  // y(α) ≥ y0 for these sets
 }
 
+TEST_CASE("The work done equals the stored energy plus the plastic dissipation", "[mpm][j2]") {
+  // Simple shear to γ = 0.5 in 1e5 steps. Stress power per reference volume τ : d (trapezoid
+  // over each step) against ψ(be) of Eq. 12 plus Σ Δγ y(α): the balance the SHPB's energy
+  // check rests on.
+  const J2Parameters p = GENERATE(steel_42crmo4_400c(), ti6al4v());
+  const int steps = 100000;
+  const Real dgamma = 0.5 / steps;
+  Mat3 f = Mat3::Identity();
+  f(0, 1) = dgamma;
+  J2State state;
+  Real work = 0, dissipated = 0, tau_xy = 0;
+  for (int k = 0; k < steps; ++k) {
+    const J2Update u = j2_update(p, f, state);
+    // d Δt = sym(f − I) to first order; its xy and yx parts each carry dγ/2.
+    work += 0.5 * (tau_xy + u.kirchhoff[5]) * dgamma;
+    tau_xy = u.kirchhoff[5];
+    dissipated += u.dissipation;
+    state = u.state;
+  }
+  const Real stored = j2_stored_energy(p, state);
+  INFO("work " << work << " J/m^3, stored " << stored << ", dissipated " << dissipated << ", relative imbalance "
+                << (work - stored - dissipated) / work);
+  CHECK(dissipated > 10 * stored);
+  CHECK(std::abs(work - stored - dissipated) <= 1e-4 * work);
+}
+
 TEST_CASE("J2 parameters are checked", "[mpm][j2]") {
   J2Parameters p = steel_42crmo4_400c();
   CHECK_NOTHROW(p.validate("scene.toml"));

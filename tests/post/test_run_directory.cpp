@@ -51,6 +51,26 @@ TEST_CASE("A run's status is the last status line of its log", "[post]") {
   else CHECK_THAT(line, Catch::Contains("no status line"));
 }
 
+TEST_CASE("A run's status.toml, where there is one, says how it ended instead of its log", "[post]") {
+  using Case = std::pair<std::string, RunStatus>;
+  const Case c = GENERATE(Case{"finished", RunStatus::finished}, Case{"max_steps", RunStatus::max_steps},
+                          Case{"failed", RunStatus::failed}, Case{"error", RunStatus::failed},
+                          Case{"interrupted", RunStatus::unfinished}, Case{"running", RunStatus::unfinished},
+                          Case{"bad_input", RunStatus::unfinished});
+  const fs::path dir = scratch("status-toml");
+  test::SyntheticRun run;
+  run.status = "finished";  // the log says finished; status.toml has the last word
+  test::write_synthetic_run(dir.string(), run, ramp(20));
+  std::ofstream(dir / "status.toml") << "status = \"" << c.first << "\"\nexit = 3\nreason = \"numerical failure: J < 0\"\n"
+                                     << "steps = 42\n";
+  const RunDirectory read = read_run_directory(dir.string());
+  CHECK(read.status == c.second);
+  CHECK(read.status_line == "status.toml: " + c.first + ", 42 steps, exit 3");
+  CHECK(read.stop_reason == "stopped: numerical failure: J < 0");
+  std::ofstream(dir / "status.toml") << "status = finished\n";  // not TOML: a bare word
+  CHECK_THROWS_AS(read_run_directory(dir.string()), InputError);
+}
+
 TEST_CASE("Series CSV columns are read with their units; a cut last line is dropped", "[post]") {
   const SeriesTable t = parse_series_csv("time[s],load_driven[N]\n0,0\n0.5,1.25\n1,", "series.csv");
   CHECK(t.names == std::vector<std::string>{"time", "load_driven"});

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scratch_dir.hpp"
+#include "solve_tool.hpp"
 #include "tiny_column.hpp"
 
 using namespace latmpm;
@@ -26,7 +27,7 @@ namespace {
 
 // The tiny column compressed ten times slower and 2.5 times further: thousands of steps.
 std::string slow_scene() {
-  std::string scene = test::tiny_column_scene;
+  std::string scene = test::tiny_scene;
   for (auto [from, to] : {std::pair<std::string, std::string>{"\"0.2mm\"", "\"0.5mm\""}, {"-100mm/s", "-10mm/s"},
                           {"series_every = 25", "series_every = 50"}, {"snapshot_every = 100", "snapshot_every = 1000"}})
     scene.replace(scene.find(from), from.size(), to);

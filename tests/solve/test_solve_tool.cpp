@@ -13,49 +13,19 @@
 #include "core/provenance.hpp"
 #include "run_output/snapshot_writer.hpp"
 #include "scene/scene.hpp"
+#include "solve_tool.hpp"
 #include "tiny_column.hpp"
-#include "scratch_dir.hpp"
 
 using namespace latmpm;
+using latmpm::test::read_text;
+using latmpm::test::run_solve;
+using latmpm::test::scratch;
+using latmpm::test::tiny_scene;
+using latmpm::test::ToolRun;
+using latmpm::test::write_scene;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch() {
-  static const fs::path dir = [] {
-    const fs::path d = test::process_scratch("solve-tool").path();
-    test::write_points(test::tiny_column({}), (d / "column.h5").string());
-    return d;
-  }();
-  return dir;
-}
-
-const std::string tiny_scene = test::tiny_column_scene;
-
-std::string write_scene(const std::string& name, const std::string& text) {
-  const fs::path path = scratch() / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-struct ToolRun {
-  int status;
-  std::string err, out;
-};
-
-ToolRun run_solve(const std::string& args) {
-  const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
-  const std::string cmd = std::string(LATMPM_BIN_DIR) + "/latmpm-solve " + args + " >" + out.string() +
-                          " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err), slurp(out)};
-}
 
 std::vector<std::vector<double>> read_csv(const fs::path& path, std::vector<std::string>* header) {
   std::ifstream in(path);
@@ -79,12 +49,6 @@ size_t column(const std::vector<std::string>& header, const std::string& name) {
   return 0;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 }  // namespace
 

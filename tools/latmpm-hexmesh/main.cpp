@@ -62,7 +62,13 @@ latmpm::CylinderMeshSpec cylinder_spec(const latmpm::CommandLine& cl) {
   const double d = cl.quantity("diameter", dimension::length), h = cl.quantity("height", dimension::length);
   if (cl.given("level") == cl.given("divisions"))
     throw UsageError("--level: give exactly one of --level and --divisions with --cylinder");
-  if (cl.given("level")) return paper_b_cylinder(static_cast<int>(cl.integer("level")), d, h);
+  if (!(d > 0)) throw InputError("--diameter", "", "must be positive");
+  if (!(h > 0)) throw InputError("--height", "", "must be positive");
+  if (cl.given("level")) {
+    const long level = cl.integer("level");
+    if (level < 1 || level > 12) throw InputError("--level", "", "must be between 1 and 12");
+    return paper_b_cylinder(static_cast<int>(level), d, h);
+  }
   CylinderMeshSpec s;
   s.diameter = d;
   s.height = h;

@@ -1,5 +1,6 @@
 // latmpm-post: load curves, metrics, plots and a summary from latmpm-solve run directories.
 // Thin: reading runs, metrics and the report live in libs/post.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,7 +21,8 @@ const char* const manual =
 Reads one or more run directories (latmpm-solve -o RUN_DIR) and writes into OUT_DIR:
 curves/<run>.load_displacement.csv and .load_time.csv (mm, N, ms), metrics.csv (one row per
 run), plots/*.png, *.svg and the gnuplot script *.gp beside them (all runs overlaid), and
-summary.md. Metrics by kind of test (docs/post.md has the exact definitions):
+summary.md; with --reference LABEL (repeatable) also comparison.csv: every run's errors
+against that run (curve, peak, late load or work, Euler; KE/SE). Metrics by kind of test (docs/post.md has the exact definitions):
   compression  initial stiffness, peak and first peak load, plateau load (ISO 13314,
                20-30 % strain), densification onset (energy-efficiency maximum), absorbed
                energy and specific energy absorption (per specimen mass)
@@ -70,6 +72,8 @@ int post(int argc, char** argv) {
                             "1 pinned-pinned, 2 clamped-free", "0.5");
   cl.option("fit-range", "FROM:TO", "travel range of the initial-stiffness fit, e.g. 0mm:0.5mm "
                                     "(default: 0 to half the first peak's travel)");
+  cl.repeated_option("reference", "LABEL", "compare every run with this one (a label): comparison.csv with the "
+                                            "curve, peak, late-load and Euler errors and the largest KE/SE (make tradeoff)");
   cl.option("plateau-strain", "FROM:TO", "strain range of the plateau load (ISO 13314: 0.2:0.3 or 0.2:0.4)", "0.2:0.3");
   cl.parse(argc, argv);
   if (!cl.given("output")) throw UsageError("missing -o OUT_DIR");
@@ -125,6 +129,10 @@ int post(int argc, char** argv) {
   context.created_utc = provenance.created_utc;
   context.title = cl.text("title");
   context.euler_k = options.euler_k;
+  context.references = cl.all("reference");
+  for (const std::string& label : context.references)
+    if (std::none_of(runs.begin(), runs.end(), [&](const post::RunAnalysis& a) { return a.run.label == label; }))
+      throw InputError("--reference " + label, "", "not the label of one of the runs");
   const post::ReportFiles files = post::write_post_report(cl.text("output"), runs, context, post::probe_gnuplot());
 
   for (const auto& a : runs)

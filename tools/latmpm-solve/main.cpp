@@ -2,6 +2,7 @@
 // run directory. Thin: the scene is read by libs/scene, the run and its outputs live in
 // libs/run_output (solve_run.hpp), the solver in libs/mpm.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "core/command_line.hpp"
@@ -9,6 +10,7 @@
 #include "core/interruption.hpp"
 #include "core/provenance.hpp"
 #include "core/tool_main.hpp"
+#include "run_output/run_status.hpp"
 #include "run_output/solve_run.hpp"
 #include "scene/scene.hpp"
 
@@ -37,6 +39,14 @@ Stopping: SIGINT (Ctrl-C), SIGTERM or SIGHUP end the run after the current step 
 checkpoint, series and a snapshot saved; --resume continues it exactly. A second signal ends
 it at once (the last periodic checkpoint is kept).
 
+The run directory also receives status.toml, written atomically at the start ("running") and
+at the end of every run, a failed one too, and when bad input stops a run whose directory
+exists: status, exit status, reason, steps, simulated time, wall and CPU seconds, particle-
+updates per second, points and peak memory. Pipelines read it, not the log.
+
+`latmpm-solve --list shapes` (schemes, materials, boundaries) prints what a scene can choose,
+one name a line: ask the tool, not the docs.
+
 Exit status: 0 done, 1 usage, 2 bad scene or points (FILE:LINE: key: problem; nothing
 written), 3 numerical failure (the log says why; series and snapshots so far are kept),
 5 an output could not be written (disk full), 128+N stopped by signal N (130 Ctrl-C, 143
@@ -46,6 +56,8 @@ Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm
   $ latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5
   $ latmpm-voxelize c.h5 --cell 0.8mm --ppc 2 -o c-points.h5
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 -o run --quiet
+  $ cat run/status.toml
+  $ latmpm-solve --list shapes
   $ head -3 run/series.csv
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set grid.shape=linear --check
   $ latmpm-solve $LATMPM_SOURCE_DIR/data/scenes/column-tiny.toml --set points.0.file=c-points.h5 --set run.max_steps=100 -o half --quiet
@@ -63,8 +75,16 @@ int solve(int argc, char** argv) {
   cl.repeated_option("set", "KEY=VALUE", "override a scene key, e.g. --set grid.cell=0.4mm, --set points.0.file=p.h5");
   cl.option("threads", "N", "solver threads, 0 = all cores", "0");
   cl.flag("quiet", "no progress lines on stderr");
+  cl.option("list", "CHOICE", "print what a scene can choose, one a line, and exit: shapes, schemes, materials, boundaries");
   cl.flag("check", "read and check the scene, its points and the solver set-up, print the resolved scene, run nothing");
   cl.parse(argc, argv);
+  if (cl.given("list")) {
+    const auto names = scene_choice_names(cl.text("list"));
+    if (names.empty())
+      throw InputError("--list", "", "'" + cl.text("list") + "' is not one of shapes, schemes, materials, boundaries");
+    for (const auto& name : names) std::cout << name << "\n";
+    return exit_ok;
+  }
   const bool resume = cl.given("resume");
   if (resume && (cl.given("scene") || cl.given("output")))
     throw UsageError("--resume RUN_DIR takes the scene and the output directory from RUN_DIR: give no scene and no -o");
@@ -75,24 +95,33 @@ int solve(int argc, char** argv) {
   const long threads = cl.integer("threads");
   if (threads < 0) throw InputError("--threads", "", "must be 0 (all cores) or positive");
 
-  // 1. The scene, with the command line's overrides.
-  Scene scene = read_scene(resume ? run_dir + "/scene.toml" : cl.text("scene"), cl.all("set"));
-
-  // 2. Points and solver: every input error is found here, before anything is written.
   Provenance provenance = Provenance::for_run("latmpm-solve", argc, argv);
-  provenance.inputs.push_back(scene.source);
-  SolveOptions options;
-  options.threads = int(threads);
-  options.progress = !cl.flag_set("quiet");
-  options.resume = resume;
-  SolveRun run(scene, provenance, options);
-  if (cl.flag_set("check")) {
-    std::cout << scene.resolved_toml;
-    return exit_ok;
-  }
+  SolveSummary s;
+  try {
+    // 1. The scene, with the command line's overrides.
+    Scene scene = read_scene(resume ? run_dir + "/scene.toml" : cl.text("scene"), cl.all("set"));
 
-  // 3. The run.
-  SolveSummary s = run.run(run_dir);
+    // 2. Points and solver: every input error is found here, before anything is written.
+    provenance.inputs.push_back(scene.source);
+    SolveOptions options;
+    options.threads = int(threads);
+    options.progress = !cl.flag_set("quiet");
+    options.resume = resume;
+    SolveRun run(scene, provenance, options);
+    if (cl.flag_set("check")) {
+      std::cout << scene.resolved_toml;
+      return exit_ok;
+    }
+
+    // 3. The run.
+    s = run.run(run_dir);
+  } catch (const InputError& e) {
+    // Nothing else is written on bad input; a run directory that exists says why its run
+    // did not happen (a pipeline reads status.toml, not stderr).
+    if (!run_dir.empty() && !cl.flag_set("check") && std::filesystem::is_directory(run_dir))
+      write_run_status(run_dir, outcome_without_run("bad_input", exit_bad_input, e.what()), provenance);
+    throw;
+  }
   if (s.signal) {
     std::fprintf(stderr, "%s: stopped by %s at step %lld, checkpoint saved: latmpm-solve --resume %s continues\n",
                  cl.tool().c_str(), signal_name(s.signal), static_cast<long long>(s.steps), run_dir.c_str());

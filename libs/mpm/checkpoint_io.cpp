@@ -1,0 +1,161 @@
+#include "mpm/checkpoint_io.hpp"
+
+#include "core/errors.hpp"
+#include "core/hdf5_file.hpp"
+
+namespace latmpm::mpm {
+
+namespace {
+constexpr const char* version_attribute = "format_version";
+
+template <class T>
+std::vector<double> flatten(const std::vector<T>& v) {
+  constexpr int n = CheckpointCodec<T>::components;
+  std::vector<double> out;
+  out.reserve(v.size() * n);
+  for (const auto& x : v)
+    if constexpr (n == 1)
+      out.push_back(x);
+    else
+      for (int i = 0; i < n; ++i) out.push_back(x.data()[i]);
+  return out;
+}
+
+template <class T>
+std::vector<T> unflatten(const std::vector<double>& d) {
+  constexpr int n = CheckpointCodec<T>::components;
+  if constexpr (n == 1) {
+    return d;
+  } else {
+    std::vector<T> out(d.size() / n);
+    for (size_t p = 0; p < out.size(); ++p)
+      for (int i = 0; i < n; ++i) out[p].data()[i] = d[p * n + i];
+    return out;
+  }
+}
+}  // namespace
+
+CheckpointWriter::CheckpointWriter(Hdf5File& file, std::string group) : file_(file), group_(std::move(group)) {
+  file_.create_group(group_);
+  file_.set_attribute(group_, version_attribute, checkpoint_format_version);
+}
+
+CheckpointWriter::CheckpointWriter(Hdf5File& file, std::string group, bool) : file_(file), group_(std::move(group)) {}
+
+CheckpointWriter CheckpointWriter::sub(const std::string& sub) const { return {file_, path(sub), true}; }
+
+void CheckpointWriter::scalar(const std::string& name, double value) { file_.write(path(name), std::vector<double>{value}, {1}); }
+
+void CheckpointWriter::integer(const std::string& name, int64_t value) {
+  file_.write(path(name), std::vector<int64_t>{value}, {1});
+}
+
+void CheckpointWriter::strings(const std::string& name, const std::vector<std::string>& values) {
+  file_.write_strings(path(name), values);
+}
+
+void CheckpointWriter::integers(const std::string& name, const std::vector<int64_t>& values, size_t columns) {
+  file_.write(path(name), values, {values.size() / columns, columns});
+}
+
+template <class T>
+void CheckpointWriter::rows(const std::string& name, const std::vector<T>& values) {
+  const size_t n = values.size();
+  if constexpr (std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t>)
+    file_.write(path(name), values, {n});
+  else if constexpr (std::is_same_v<T, uint32_t>)
+    file_.write(path(name), std::vector<int64_t>(values.begin(), values.end()), {n});
+  else if constexpr (CheckpointCodec<T>::components == 1)
+    file_.write(path(name), values, {n});
+  else
+    file_.write(path(name), flatten(values), {n, size_t(CheckpointCodec<T>::components)});
+}
+
+CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group) : file_(file), group_(std::move(group)) {
+  if (!file_.exists(group_) || !file_.has_attribute(group_, version_attribute))
+    throw InputError(file_.path(), group_,
+                     "is not a latmpm checkpoint of format " + std::to_string(checkpoint_format_version) +
+                         " (no format_version: written by an older latmpm; rerun from the start)");
+  const int64_t version = file_.int_attribute(group_, version_attribute);
+  if (version != checkpoint_format_version)
+    throw InputError(file_.path(), group_,
+                     "has checkpoint format " + std::to_string(version) + ", this latmpm reads format " +
+                         std::to_string(checkpoint_format_version));
+}
+
+CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group, bool)
+    : file_(file), group_(std::move(group)) {}
+
+CheckpointReader CheckpointReader::sub(const std::string& sub) const { return {file_, path(sub), true}; }
+
+const std::string& CheckpointReader::file_path() const { return file_.path(); }
+
+bool CheckpointReader::has(const std::string& name) const { return file_.exists(path(name)); }
+
+void CheckpointReader::expect_shape(const std::string& name, size_t count, int components) const {
+  if (!has(name)) throw InputError(file_.path(), path(name), "missing from the checkpoint");
+  const auto dims = file_.shape(path(name));
+  const size_t rows = dims.empty() ? 0 : dims[0];
+  if (rows != count)
+    throw InputError(file_.path(), path(name),
+                     "has " + std::to_string(rows) + " rows where the scene gives " + std::to_string(count) +
+                         ": the checkpoint belongs to another scene or point set");
+  const size_t cols = dims.size() > 1 ? dims[1] : 1;
+  if (dims.size() > 2 || cols != size_t(components))
+    throw InputError(file_.path(), path(name),
+                     "has " + std::to_string(cols) + " values per row, expected " + std::to_string(components));
+}
+
+double CheckpointReader::scalar(const std::string& name) const {
+  expect_shape(name, 1, 1);
+  return file_.read_doubles(path(name))[0];
+}
+
+int64_t CheckpointReader::integer(const std::string& name) const {
+  expect_shape(name, 1, 1);
+  return file_.read_int64(path(name))[0];
+}
+
+std::vector<std::string> CheckpointReader::strings(const std::string& name) const {
+  if (!has(name)) throw InputError(file_.path(), path(name), "missing from the checkpoint");
+  return file_.read_strings(path(name));
+}
+
+std::vector<int64_t> CheckpointReader::integers(const std::string& name, size_t columns) const {
+  if (!has(name)) throw InputError(file_.path(), path(name), "missing from the checkpoint");
+  const auto dims = file_.shape(path(name));
+  expect_shape(name, dims.empty() ? 0 : dims[0], int(columns));
+  return file_.read_int64(path(name));
+}
+
+template <class T>
+std::vector<T> CheckpointReader::rows(const std::string& name, size_t count) const {
+  if constexpr (std::is_same_v<T, int32_t>) {
+    expect_shape(name, count, 1);
+    return file_.read_int32(path(name));
+  } else if constexpr (std::is_same_v<T, uint8_t>) {
+    expect_shape(name, count, 1);
+    return file_.read_uint8(path(name));
+  } else if constexpr (std::is_same_v<T, uint32_t>) {
+    expect_shape(name, count, 1);
+    const auto v = file_.read_int64(path(name));
+    return std::vector<uint32_t>(v.begin(), v.end());
+  } else {
+    expect_shape(name, count, CheckpointCodec<T>::components);
+    return unflatten<T>(file_.read_doubles(path(name)));
+  }
+}
+
+#define LATMPM_CHECKPOINT_ROWS(T)                                                        \
+  template void CheckpointWriter::rows<T>(const std::string&, const std::vector<T>&);   \
+  template std::vector<T> CheckpointReader::rows<T>(const std::string&, size_t) const;
+LATMPM_CHECKPOINT_ROWS(Real)
+LATMPM_CHECKPOINT_ROWS(Vec3)
+LATMPM_CHECKPOINT_ROWS(Mat3)
+LATMPM_CHECKPOINT_ROWS(SymTensor)
+LATMPM_CHECKPOINT_ROWS(int32_t)
+LATMPM_CHECKPOINT_ROWS(uint32_t)
+LATMPM_CHECKPOINT_ROWS(uint8_t)
+#undef LATMPM_CHECKPOINT_ROWS
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,45 @@
+// The particle field registry: every per-particle array of Particles, listed once. Storage
+// (resize), sorting (permute), memory accounting, the checkpoint (save and restore) and the
+// snapshots' extra scalars all visit this list, so a new particle field is one line here
+// (and its member in particles.hpp). Material history columns (material_history.hpp) are
+// visited after the fixed fields, one per history variable the run's models declare.
+//
+//   for_each_particle_field(ps, [](const ParticleField& f, auto& values, const auto& fill) { ... });
+#pragma once
+#include "mpm/particles.hpp"
+
+namespace latmpm::mpm {
+
+struct ParticleField {
+  const char* name;  // dataset name in a checkpoint's particles group
+  // Optional fields are empty unless the run needs them (penalty contact history): resize
+  // and permute leave an empty one empty, a checkpoint holds it only when it is present.
+  bool optional = false;
+  // Shown in snapshots beside the fixed snapshot quantities (particle_snapshot.hpp).
+  bool snapshot = false;
+};
+
+// Calls visit(field, values, fill) for every per-particle array of ps, in a fixed order;
+// `fill` is the value a new particle takes. PS is Particles or const Particles.
+template <class PS, class Visit>
+void for_each_particle_field(PS& ps, Visit&& visit) {
+  visit(ParticleField{"position"}, ps.position, Vec3(Vec3::Zero()));
+  visit(ParticleField{"velocity"}, ps.velocity, Vec3(Vec3::Zero()));
+  visit(ParticleField{"mass"}, ps.mass, Real(0));
+  visit(ParticleField{"volume0"}, ps.volume0, Real(0));
+  visit(ParticleField{"deformation"}, ps.deformation, Mat3(Mat3::Identity()));
+  visit(ParticleField{"stress"}, ps.stress, SymTensor(SymTensor::Zero()));
+  visit(ParticleField{"half_size0"}, ps.half_size0, Vec3(Vec3::Zero()));
+  visit(ParticleField{"body"}, ps.body, int32_t(0));
+  visit(ParticleField{"id"}, ps.id, uint32_t(0));
+  visit(ParticleField{"flags"}, ps.flags, uint8_t(0));
+  visit(ParticleField{"contact_body", true}, ps.contact_body, int32_t(-1));
+  visit(ParticleField{"contact_anchor", true}, ps.contact_anchor, Vec3(Vec3::Zero()));
+  for (auto& column : ps.history)
+    visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
+}
+
+// Bytes the particle arrays hold (their capacity).
+size_t particle_memory_bytes(const Particles& ps);
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,67 @@
+#include "post/run_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "post/post_report.hpp"
+
+namespace latmpm::post {
+
+double kinetic_over_strain(const RunAnalysis& a) {
+  const SeriesTable& s = a.run.series;
+  const auto& u = a.history.displacement;
+  if (!s.has("kinetic_energy") || !s.has("strain_energy") || u.empty()) return RunChecks::none;
+  const auto& ke = s.column("kinetic_energy", a.run.path);
+  const auto& se = s.column("strain_energy", a.run.path);
+  double ratio = 0;
+  for (size_t i = 0; i < u.size() && i < ke.size(); ++i)
+    if (u[i] >= 0.5 * u.back() && se[i] > 0) ratio = std::max(ratio, ke[i] / se[i]);
+  return ratio;
+}
+
+RunChecks run_checks(const RunAnalysis& a) {
+  RunChecks c;
+  const SeriesTable& s = a.run.series;
+  const auto& u = a.history.displacement;
+  const auto& f = a.history.load;
+  if (!f.empty()) c.final_load = f.back();
+  c.ke_over_se = kinetic_over_strain(a);
+  if (s.has("kinetic_energy") && s.has("strain_energy") && s.has("external_work") && !u.empty()) {
+    const auto& ke = s.column("kinetic_energy", a.run.path);
+    const auto& se = s.column("strain_energy", a.run.path);
+    const auto& w = s.column("external_work", a.run.path);
+    const size_t n = std::min(u.size(), w.size());
+    if (n > 0 && w[n - 1] != 0) {
+      c.energy_balance_error = std::abs(ke[n - 1] + se[n - 1] - w[n - 1]) / std::abs(w[n - 1]);
+      for (size_t i = 0; i < n; ++i)
+        if (w[i] > 1e-3 * w[n - 1] && std::abs(ke[i] + se[i] - w[i]) > 0.05 * std::abs(w[i])) {
+          c.balance_5pct_strain = u[i] / a.run.specimen.gauge_length;
+          break;
+        }
+    }
+  }
+  if (!u.empty() && u.back() > 0) {
+    double sum = 0, squares = 0;
+    size_t m = 0;
+    for (size_t i = 0; i < u.size(); ++i)
+      if (u[i] >= 0.75 * u.back()) sum += f[i], squares += f[i] * f[i], ++m;
+    if (m > 0) c.load_ripple = std::sqrt(std::max(0.0, squares / double(m) - (sum / double(m)) * (sum / double(m))));
+  }
+  return c;
+}
+
+std::string checks_csv(const std::vector<RunAnalysis>& runs, const std::vector<std::string>& provenance_comments) {
+  std::ostringstream out;
+  for (const auto& line : provenance_comments) out << "# " << line << "\n";
+  out << "# how far each run can be trusted (docs/post.md, \"Checks\")\n";
+  out << "label,energy_balance_error[1],balance_5pct_strain[1],ke_over_se[1],load_ripple[N],final_load[N]\n";
+  for (const RunAnalysis& a : runs) {
+    const RunChecks c = run_checks(a);
+    out << a.run.label << "," << number_text(c.energy_balance_error) << "," << number_text(c.balance_5pct_strain) << ","
+        << number_text(c.ke_over_se) << "," << number_text(c.load_ripple) << "," << number_text(c.final_load) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace latmpm::post

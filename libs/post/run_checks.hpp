@@ -1,0 +1,34 @@
+// How far a run can be trusted, from its series (checks.csv; make extremes reads it):
+//   energy_balance_error  |KE + SE − W| / W at the last row (kinetic, strain energy, external
+//                         work of the series): small when the scheme conserves energy
+//   balance_5pct_strain   travel / gauge length at the first row where that error passes 5 %
+//                         (rows with W > 1e-3 W_end); NaN when it never does or no gauge length
+//   ke_over_se            the largest KE / SE over the second half of the travel: small when the
+//                         run is quasi-static
+//   load_ripple           N, root-mean-square of the load about its mean over the last quarter
+//                         of the travel (the explicit solver's ringing after buckling)
+//   final_load            N, the load of the last row
+// Each is NaN where the series lacks the columns it needs.
+#pragma once
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "post/run_analysis.hpp"
+
+namespace latmpm::post {
+
+struct RunChecks {
+  static constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  double energy_balance_error = none, balance_5pct_strain = none, ke_over_se = none;
+  double load_ripple = none, final_load = none;
+};
+
+RunChecks run_checks(const RunAnalysis& run);
+// The largest KE / SE over the rows at or beyond half of the final travel where SE > 0.
+double kinetic_over_strain(const RunAnalysis& run);
+
+// checks.csv: one row per run.
+std::string checks_csv(const std::vector<RunAnalysis>& runs, const std::vector<std::string>& provenance_comments);
+
+}  // namespace latmpm::post

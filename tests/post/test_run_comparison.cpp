@@ -1,0 +1,102 @@
+// Errors of a run against a reference run (post/run_comparison.hpp) and the checks of one run
+// (post/run_checks.hpp) on synthetic runs whose numbers are known exactly.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "post/run_analysis.hpp"
+#include "post/run_checks.hpp"
+#include "post/run_comparison.hpp"
+#include "post/run_directory.hpp"
+#include "synthetic_run.hpp"
+#include "scratch_dir.hpp"
+
+using namespace latmpm;
+using namespace latmpm::post;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A run loaded linearly, F = stiffness u, over 2 mm in 201 rows; kinetic energy a fixed
+// fraction of the strain energy F u / 2 (the ratio the quasi-static check must find); the
+// external work W such that the balance error |KE + SE − W| / W is 0.1 u / u_end.
+RunAnalysis linear_run(const std::string& name, double stiffness, double ke_fraction, const std::string& cell = "tetrahedral") {
+  const fs::path dir = test::process_scratch("comparison").path() / name;
+  fs::remove_all(dir);
+  test::SeriesSpec s;
+  std::vector<double> kinetic, strain, work;
+  for (int i = 0; i <= 200; ++i) {
+    const double u = 1e-5 * i, f = stiffness * u;
+    s.time.push_back(1e-4 * i);
+    s.displacement.push_back(u);
+    s.load.push_back(f);
+    strain.push_back(0.5 * f * u);
+    kinetic.push_back(ke_fraction * 0.5 * f * u);
+    work.push_back((kinetic.back() + strain.back()) / (1 - 0.1 * i / 200.0));
+  }
+  s.extra = {{"kinetic_energy[J]", kinetic}, {"strain_energy[J]", strain}, {"external_work[J]", work}};
+  test::SyntheticRun spec;
+  spec.cell = cell;
+  test::write_synthetic_run(dir.string(), spec, s);
+  RunDirectory run = read_run_directory(dir.string());
+  run.label = name;
+  return analyse_run(std::move(run), AnalysisOptions{});
+}
+
+}  // namespace
+
+TEST_CASE("A run loaded 10 % more than its reference has curve, peak and work errors of 10 %", "[post]") {
+  const RunAnalysis reference = linear_run("reference", 1000, 0.01);
+  const RunAnalysis stiffer = linear_run("stiffer", 1100, 0.2);
+  const RunComparison c = compare_runs(reference, stiffer);
+  // Bin means of a line are the line at the bin centres: the L2 ratio is exactly 0.1.
+  CHECK(c.curve_error == Approx(0.1).epsilon(1e-9));
+  CHECK(c.peak_error == Approx(0.1).epsilon(1e-9));
+  CHECK(c.late_error == Approx(0.1).epsilon(1e-9));  // work: the trapezoid rule is exact on a line
+  CHECK(std::isnan(c.euler_error));                  // not a column
+  CHECK(c.ke_over_se == Approx(0.2).epsilon(1e-9));
+  // Against itself every error is 0.
+  const RunComparison self = compare_runs(reference, reference);
+  CHECK(self.curve_error == 0);
+  CHECK(self.peak_error == 0);
+  CHECK(self.late_error == 0);
+}
+
+TEST_CASE("Column runs are compared by their post-buckling load and against the Euler load", "[post]") {
+  const RunAnalysis reference = linear_run("column-ref", 1000, 0, "column");
+  const RunAnalysis run = linear_run("column-run", 900, 0, "column");
+  REQUIRE(run.column);
+  const RunComparison c = compare_runs(reference, run);
+  // Mean of F = k u over the last quarter of the travel scales with k.
+  CHECK(c.late_error == Approx(-0.1).epsilon(1e-9));
+  CHECK(c.euler_error == Approx(run.column->post_buckling_ratio - 1));
+  CHECK(c.curve_error == Approx(0.1).epsilon(1e-9));
+}
+
+TEST_CASE("comparison.csv has a row per reference and run and refuses an unknown reference", "[post]") {
+  const std::vector<RunAnalysis> runs = {linear_run("a", 1000, 0), linear_run("b", 1100, 0)};
+  const std::string csv = comparison_csv(runs, {"a", "b"}, {"made by a test"});
+  CHECK_THAT(csv, Catch::Contains("reference,label,curve_error[1],peak_error[1]"));
+  CHECK_THAT(csv, Catch::Contains("\na,b,0.1,0.1,0.1,,0\n"));
+  CHECK_THAT(csv, Catch::Contains("\nb,b,0,0,0,,0\n"));
+  CHECK_THROWS_WITH(comparison_csv(runs, {"c"}, {}), Catch::Contains("--reference: c"));
+}
+
+TEST_CASE("The checks find the energy balance error, where it passes 5 %, and the load ripple", "[post]") {
+  const RunAnalysis run = linear_run("checked", 1000, 0.3);
+  const RunChecks c = run_checks(run);
+  CHECK(c.energy_balance_error == Approx(0.1).epsilon(1e-9));
+  // 0.1 u / u_end passes 0.05 first at row 101 (u = 1.01 mm); gauge length 40 mm.
+  CHECK(c.balance_5pct_strain == Approx(1.01e-3 / 40e-3).epsilon(1e-9));
+  CHECK(c.ke_over_se == Approx(0.3).epsilon(1e-9));
+  CHECK(c.final_load == Approx(2.0).epsilon(1e-12));  // 1000 N/m x 2 mm
+  // F = k u over the last quarter: 51 evenly spaced values, rms about their mean
+  // k du sqrt((n^2 - 1) / 12) with du = 0.01 mm.
+  CHECK(c.load_ripple == Approx(1000 * 1e-5 * std::sqrt((51.0 * 51.0 - 1) / 12)).epsilon(1e-9));
+  const std::string csv = checks_csv({run}, {});
+  CHECK_THAT(csv, Catch::Contains("label,energy_balance_error[1],balance_5pct_strain[1],ke_over_se[1]"));
+  CHECK_THAT(csv, Catch::Contains("\nchecked,0.1,0.02525,0.3,"));
+}
