@@ -70,6 +70,7 @@ std::string shown_path(const std::string& path) {
 OutputFile::OutputFile(const std::string& target, const std::string& option)
     : target_(target), option_(option) {
   if (target.empty()) throw InputError(option, "", "empty output path");
+  const SignalsHeld created_and_registered_together;
   if (to_stdout()) {
     temp_ = make_temp_in(temp_dir(), "latmpm-stdout");
   } else {
@@ -122,10 +123,13 @@ void OutputFile::commit() {
 InputFile::InputFile(const std::string& source, const std::string& option) : source_(source) {
   if (source.empty()) throw InputError(option, "", "empty input path");
   if (source == "-") {
-    path_ = make_temp_in(temp_dir(), "latmpm-stdin");
-    if (path_.empty()) throw InputError(option, "", "cannot stage standard input in " + temp_dir());
-    temporary_ = true;
-    slot_ = register_temporary(path_);
+    {
+      const SignalsHeld created_and_registered_together;
+      path_ = make_temp_in(temp_dir(), "latmpm-stdin");
+      if (path_.empty()) throw InputError(option, "", "cannot stage standard input in " + temp_dir());
+      temporary_ = true;
+      slot_ = register_temporary(path_);
+    }
     const long bytes = copy_stdin_to(path_);
     if (bytes <= 0) {
       std::remove(path_.c_str());

@@ -92,6 +92,17 @@ const char* signal_name(int signo) {
   }
 }
 
+static_assert(sizeof(sigset_t) <= 128, "SignalsHeld keeps a sigset_t");
+
+SignalsHeld::SignalsHeld() {
+  sigset_t stop;
+  sigemptyset(&stop);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stop, s);
+  ::sigprocmask(SIG_BLOCK, &stop, reinterpret_cast<sigset_t*>(saved_));
+}
+
+SignalsHeld::~SignalsHeld() { ::sigprocmask(SIG_SETMASK, reinterpret_cast<sigset_t*>(saved_), nullptr); }
+
 TemporaryPath::~TemporaryPath() {
   ::unlink(path_.c_str());  // gone already when it was moved into place
   unregister_temporary(slot_);

@@ -23,6 +23,20 @@ void install_signal_handlers(const std::string& tool);
 int register_temporary(const std::string& path);
 void unregister_temporary(int slot);
 
+// Holds SIGINT, SIGTERM and SIGHUP back while alive (they are delivered when it goes): for
+// creating a temporary file and registering it as one step, so that no signal can come
+// between the two and leave the file behind.
+class SignalsHeld {
+ public:
+  SignalsHeld();
+  ~SignalsHeld();
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  unsigned char saved_[128];  // a sigset_t, kept opaque here
+};
+
 // A file another library writes under a name of its choosing (gmsh picks the format by the
 // extension): registered for the signal handler and removed when the guard goes, unless
 // the file was moved into place first.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "hexmesh/hex_mesh.hpp"
@@ -110,6 +111,10 @@ CylinderMeshSpec paper_b_cylinder(int level, double diameter, double height) {
 HexMesh cylinder_hex_mesh(const CylinderMeshSpec& spec, const std::string& msh_path) {
   require_positive(spec.diameter, "diameter");
   require_positive(spec.height, "height");
+  // gmsh's geometry tolerances are absolute: a cylinder far below a nanometre cannot be built
+  // (gmsh throws a std::string for 1e-300 m), nor one beyond a kilometre meshed sensibly.
+  for (const auto& [field, value] : {std::pair<const char*, double>{"diameter", spec.diameter}, {"height", spec.height}})
+    if (value < 1e-9 || value > 1e3) throw InputError("hex mesh", field, "must lie between 1 nm and 1 km");
   if (spec.core_divisions < 1 || spec.ring_divisions < 1 || spec.axial_divisions < 1)
     throw InputError("hex mesh", "divisions", "must be at least 1");
   if (!(spec.core_fraction > 0.05 && spec.core_fraction < 0.65))

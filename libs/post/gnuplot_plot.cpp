@@ -128,10 +128,14 @@ std::string run_gnuplot(const std::string& directory, const std::string& script_
                         const std::string& png_file, const std::string& svg_file) {
   // gnuplot's messages go to a private file in the plots directory, removed here.
   std::string errors = directory + "/.gnuplot-errors.XXXXXX";
-  const int fd = ::mkstemp(errors.data());
-  if (fd < 0) return "cannot create a file in " + directory;
-  ::close(fd);
-  const int slot = register_temporary(errors);
+  int slot = -1;
+  {
+    const SignalsHeld created_and_registered_together;
+    const int fd = ::mkstemp(errors.data());
+    if (fd < 0) return "cannot create a file in " + directory;
+    ::close(fd);
+    slot = register_temporary(errors);
+  }
   const std::string vars = "png_file=" + gnuplot_quote(png_file) + "; svg_file=" + gnuplot_quote(svg_file);
   const int status = run_program({"gnuplot", "-e", vars, script_file}, directory, errors);
   std::ifstream in(errors);
