@@ -3,13 +3,14 @@
 #   make test   install missing packages, build, run every test (ctest)
 #   make demo   install, build, run the default experiment
 #   make bench  build and run the benchmarks (figures go to docs/benchmarks.md by hand)
+#   make fuzz   build and run the hostile-input suite, every case (docs/robustness.md)
 BUILD      ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
 BIN        := $(abspath $(BUILD))/bin
 CMAKE_ARGS ?=
 
-.PHONY: all build configure deps test demo bench clean help
+.PHONY: all build configure deps test demo bench fuzz clean help
 all: build
 
 help:
@@ -37,6 +38,10 @@ demo: deps
 bench: deps
 	$(MAKE) build
 	bash bench/run.sh $(BIN)
+
+fuzz: deps
+	$(MAKE) build
+	python3 tests/fuzz/run_fuzz.py --bin $(BIN) --source $(CURDIR) --jobs $(JOBS)
 
 clean:
 	rm -rf $(BUILD)

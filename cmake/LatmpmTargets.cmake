@@ -37,6 +37,7 @@ function(latmpm_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(test_${name} ${ARG_SOURCES})
   target_link_libraries(test_${name} PRIVATE latmpm_catch_main ${ARG_DEPS})
+  target_include_directories(test_${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
   target_compile_options(test_${name} PRIVATE ${LATMPM_WARNINGS} ${LATMPM_OPT_FLAGS})
   target_compile_definitions(test_${name} PRIVATE
     LATMPM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" LATMPM_BIN_DIR="${CMAKE_RUNTIME_OUTPUT_DIRECTORY}")

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/interruption.hpp"
 
 namespace latmpm {
 namespace {
@@ -84,7 +85,8 @@ StepReport write_step(const StrutGraph& graph, const std::string& path, bool ver
     }
     gmsh::model::occ::synchronize();
     // gmsh chooses the format by extension: write "<path>.step", then move it into place.
-    const std::string step_path = path + ".step";
+    const TemporaryPath step_file(path + ".step");
+    const std::string& step_path = step_file.path();
     gmsh::write(step_path);
     if (std::rename(step_path.c_str(), path.c_str()) != 0) {
       std::remove(step_path.c_str());

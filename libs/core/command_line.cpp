@@ -173,6 +173,10 @@ std::string CommandLine::help_text() const {
     os << "\n";
   }
   os << "  --help                      this text\n  --version                   the version\n";
+  // The statuses every tool shares (core/tool_main.hpp, docs/robustness.md).
+  os << "\nExit status: 0 done, 1 usage, 2 bad input, 3 numerical failure, 4 internal error, 5 an output\n"
+        "could not be written (disk full, closed pipe), 128+N stopped by signal N (130 Ctrl-C, 143\n"
+        "SIGTERM). On failure: one line on stderr naming the problem, no partial output left.\n";
   return os.str();
 }
 

@@ -1,6 +1,6 @@
 // Typed errors thrown by the libraries. Only a tool's main() catches them and maps each to
 // an exit status with one line (see core/tool_main.hpp):
-//   UsageError 1, InputError 2, NumericalError 3.
+//   UsageError 1, InputError 2, NumericalError 3, OutputError 5.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -29,6 +29,12 @@ struct InputError : std::runtime_error {
 // names step, particle and position where known.
 struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// An output could not be written (disk full, I/O error, a closed pipe): nothing partial is
+// left under the output's name. `where` names the file or option.
+struct OutputError : std::runtime_error {
+  OutputError(const std::string& where, const std::string& problem) : std::runtime_error(where + ": " + problem) {}
 };
 
 // Thrown by the command-line parser after printing --help or --version: exit 0.

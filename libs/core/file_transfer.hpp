@@ -3,9 +3,12 @@
 // Until commit() the data lives under a temporary name beside the target (rename is atomic),
 // or in $TMPDIR for stdout; if anything throws first, the destructor removes it, so a failed
 // run never leaves a half-written file. HDF5 needs a seekable file, so stdin/stdout are
-// staged through a temporary file.
+// staged through a temporary file. Temporary files are registered with the signal handler
+// (core/interruption.hpp): SIGINT/SIGTERM remove them too.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace latmpm {
 
@@ -20,13 +23,30 @@ class OutputFile {
   const std::string& temp_path() const { return temp_; }
   const std::string& target() const { return target_; }
   bool to_stdout() const { return target_ == "-"; }
-  // Renames the temporary file to the target, or copies it to stdout.
+  // Writes `text` as the whole temporary file; OutputError on a full disk.
+  void write_text(const std::string& text) const;
+  // Renames the temporary file to the target, or copies it to stdout. Throws OutputError
+  // (removing the temporary file) when that fails: a closed pipe, a full disk.
   void commit();
 
  private:
   std::string target_, option_, temp_;
+  int slot_ = -1;  // signal-handler registration of temp_
   bool committed_ = false;
 };
+
+// The name to show for `path` in a message: the target of the OutputFile staging it there
+// ("-" for stdout), else `path` itself.
+std::string shown_path(const std::string& path);
+
+// Writes `text` to `target` through an OutputFile (whole or not at all); OutputError on a
+// full disk.
+void write_file_atomically(const std::string& target, const std::string& text, const std::string& option);
+
+// Refuses two outputs naming one file (also through ./, .. or symbolic links, or hard links
+// to an existing file): the second would silently replace the first. Each entry is
+// {option, path}; "-" (stdout) is left to the caller.
+void refuse_aliased_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 class InputFile {
  public:
@@ -42,6 +62,7 @@ class InputFile {
 
  private:
   std::string source_, path_;
+  int slot_ = -1;
   bool temporary_ = false;
 };
 

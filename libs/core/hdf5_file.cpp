@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/file_transfer.hpp"
 
 namespace latmpm {
 namespace {
@@ -12,8 +13,14 @@ namespace {
 static_assert(sizeof(hid_t) == sizeof(int64_t), "hid_t is stored as int64_t");
 
 // HDF5 prints its own error stack by default; we report errors ourselves, once.
+// No library shutdown at exit: a file whose close failed (a full disk) stays open inside
+// HDF5, and shutting down retries the flush on freed state and crashes after our message.
+// Every file we write is closed (and checked) explicitly before it is published.
 struct SilenceHdf5 {
-  SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+  SilenceHdf5() {
+    H5dont_atexit();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
 };
 const SilenceHdf5 silence_hdf5;
 
@@ -51,7 +58,7 @@ Hdf5File::Hdf5File(const std::string& path, Mode mode) : path_(path) {
   switch (mode) {
     case Mode::create:
       id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-      if (id_ < 0) fail("", "cannot create the file (is the directory writable?)");
+      if (id_ < 0) fail_write("", "cannot create the file (is the directory writable?)");
       break;
     case Mode::read:
     case Mode::read_write: {
@@ -68,30 +75,49 @@ Hdf5File::Hdf5File(const std::string& path, Mode mode) : path_(path) {
   }
 }
 
-Hdf5File::~Hdf5File() { close(); }
+Hdf5File::~Hdf5File() { close_quietly(); }
 
 Hdf5File::Hdf5File(Hdf5File&& other) noexcept
     : path_(std::move(other.path_)), id_(std::exchange(other.id_, -1)) {}
 
 Hdf5File& Hdf5File::operator=(Hdf5File&& other) noexcept {
   if (this != &other) {
-    close();
+    close_quietly();
     path_ = std::move(other.path_);
     id_ = std::exchange(other.id_, -1);
   }
   return *this;
 }
 
+bool Hdf5File::close_quietly() noexcept {
+  if (id_ < 0) return true;
+  unsigned intent = 0;
+  const bool writing = H5Fget_intent(id_, &intent) >= 0 && (intent & H5F_ACC_RDWR);
+  bool ok = !writing || H5Fflush(id_, H5F_SCOPE_LOCAL) >= 0;
+  ok = H5Fclose(id_) >= 0 && ok;
+  id_ = -1;
+  return ok;
+}
+
 void Hdf5File::close() {
-  if (id_ >= 0) {
-    H5Fflush(id_, H5F_SCOPE_LOCAL);
-    H5Fclose(id_);
-    id_ = -1;
-  }
+  const std::string path = path_;
+  if (!close_quietly()) throw OutputError(shown_path(path), "write failed when closing the file (disk full?)");
 }
 
 void Hdf5File::fail(const std::string& field, const std::string& problem) const {
   throw InputError(path_, field, problem);
+}
+
+void Hdf5File::fail_write(const std::string& field, const std::string& problem) const {
+  throw OutputError(shown_path(path_) + (field.empty() ? "" : ": " + field), problem);
+}
+
+bool Hdf5File::is_integer(const std::string& dataset) const {
+  if (!exists(dataset)) fail(dataset, "missing dataset");
+  Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot open dataset");
+  Handle type(H5Dget_type(set.id), H5Tclose);
+  return H5Tget_class(type.id) == H5T_INTEGER;
 }
 
 bool Hdf5File::exists(const std::string& object) const { return link_exists(id_, object); }
@@ -101,7 +127,7 @@ void Hdf5File::create_group(const std::string& group) {
   Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
   H5Pset_create_intermediate_group(lcpl.id, 1);
   Handle g(H5Gcreate2(id_, group.c_str(), lcpl.id, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!g.ok()) fail(group, "cannot create group");
+  if (!g.ok()) fail_write(group, "cannot create group");
 }
 
 template <typename T>
@@ -117,9 +143,9 @@ void Hdf5File::write_numeric(const std::string& dataset, const std::vector<T>& d
   Handle set(H5Dcreate2(id_, dataset.c_str(), mem_type, space.id, H5P_DEFAULT, H5P_DEFAULT,
                         H5P_DEFAULT),
              H5Dclose);
-  if (!set.ok()) fail(dataset, "cannot create dataset");
+  if (!set.ok()) fail_write(dataset, "cannot create dataset");
   if (count > 0 && H5Dwrite(set.id, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
-    fail(dataset, "write failed (disk full?)");
+    fail_write(dataset, "write failed (disk full?)");
 }
 
 template <typename T>
@@ -131,6 +157,9 @@ std::vector<T> Hdf5File::read_numeric(const std::string& dataset, std::vector<si
   Handle type(H5Dget_type(set.id), H5Tclose);
   H5T_class_t cls = H5Tget_class(type.id);
   if (cls != H5T_INTEGER && cls != H5T_FLOAT) fail(dataset, "not a numeric dataset");
+  // Integers (indices, ids, flags) read from reals would be silently truncated: 0.5 -> 0.
+  if (cls == H5T_FLOAT && H5Tget_class(static_cast<hid_t>(mem_type)) == H5T_INTEGER)
+    fail(dataset, "stored as real numbers where integers are expected");
   std::vector<size_t> shape_out = shape(dataset);
   size_t count = 1;
   for (size_t d : shape_out) count *= d;
@@ -194,19 +223,21 @@ void Hdf5File::write_strings(const std::string& dataset, const std::vector<std::
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
   Handle set(H5Dcreate2(id_, dataset.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
              H5Dclose);
-  if (!set.ok()) fail(dataset, "cannot create dataset");
+  if (!set.ok()) fail_write(dataset, "cannot create dataset");
   std::vector<const char*> ptrs;
   for (const auto& s : data) ptrs.push_back(s.c_str());
   if (n > 0 && H5Dwrite(set.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
-    fail(dataset, "write failed");
+    fail_write(dataset, "write failed (disk full?)");
 }
 
 std::vector<std::string> Hdf5File::read_strings(const std::string& dataset) const {
   if (!exists(dataset)) fail(dataset, "missing dataset");
   Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail(dataset, "cannot open dataset");
   Handle ftype(H5Dget_type(set.id), H5Tclose);
   if (H5Tget_class(ftype.id) != H5T_STRING || !H5Tis_variable_str(ftype.id))
     fail(dataset, "not a variable-length string dataset");
+  if (shape(dataset).size() != 1) fail(dataset, "not a one-dimensional list of strings");
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type.id, H5T_VARIABLE);
   H5Tset_cset(type.id, H5Tget_cset(ftype.id));
@@ -249,7 +280,7 @@ void Hdf5File::set_attribute(const std::string& object, const std::string& name,
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   const char* p = value.c_str();
   if (!replace_attribute(id_, object, name, type.id, space.id, &p))
-    fail(object, "cannot write attribute '" + name + "'");
+    fail_write(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name,
@@ -257,19 +288,19 @@ void Hdf5File::set_attribute(const std::string& object, const std::string& name,
   hsize_t n = value.size();
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
   if (!replace_attribute(id_, object, name, H5T_NATIVE_DOUBLE, space.id, value.data()))
-    fail(object, "cannot write attribute '" + name + "'");
+    fail_write(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (!replace_attribute(id_, object, name, H5T_NATIVE_DOUBLE, space.id, &value))
-    fail(object, "cannot write attribute '" + name + "'");
+    fail_write(object, "cannot write attribute '" + name + "'");
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, int64_t value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (!replace_attribute(id_, object, name, H5T_NATIVE_INT64, space.id, &value))
-    fail(object, "cannot write attribute '" + name + "'");
+    fail_write(object, "cannot write attribute '" + name + "'");
 }
 
 bool Hdf5File::has_attribute(const std::string& object, const std::string& name) const {

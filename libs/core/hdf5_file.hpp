@@ -1,6 +1,9 @@
 // A small RAII layer over the HDF5 C API: the one way latmpm files are read and written.
 // Datasets are addressed by path ("/points/position"); missing groups are created on write.
-// Every failure throws InputError naming the file and the dataset or attribute.
+// A failure to read throws InputError naming the file and the dataset or attribute; a failure
+// to write (disk full, I/O error) throws OutputError. A file being written must be closed
+// with close() before it is published: HDF5 keeps data in its cache until then, so a full
+// disk is often only seen there (the destructor cannot report it).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -20,6 +23,8 @@ class Hdf5File {
 
   const std::string& path() const { return path_; }
   bool exists(const std::string& object) const;  // group or dataset
+  bool is_integer(const std::string& dataset) const;  // stored as an integer type
+  // Flushes and closes; throws OutputError when the data did not reach the disk.
   void close();
 
   // Datasets: `dims` is the shape, row-major (N×3 for positions). Overwrites an existing one.
@@ -35,7 +40,8 @@ class Hdf5File {
              const std::vector<size_t>& dims);
   void write_strings(const std::string& dataset, const std::vector<std::string>& data);
 
-  // Reads convert from the stored numeric type. `dims`, when given, receives the shape.
+  // Reads convert from the stored numeric type, except reals into integers (refused: an index
+  // stored as 0.5 is not an index). `dims`, when given, receives the shape.
   std::vector<double> read_doubles(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
   std::vector<float> read_floats(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
   std::vector<int32_t> read_int32(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
@@ -69,6 +75,8 @@ class Hdf5File {
   std::vector<T> read_numeric(const std::string& dataset, std::vector<size_t>* dims,
                               int64_t mem_type) const;
   [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
+  [[noreturn]] void fail_write(const std::string& field, const std::string& problem) const;
+  bool close_quietly() noexcept;  // false when the flush or close failed
 
   std::string path_;
   int64_t id_ = -1;  // hid_t, kept as int64_t so the header stays free of hdf5.h

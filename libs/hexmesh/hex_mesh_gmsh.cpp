@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "hexmesh/hex_mesh.hpp"
@@ -83,10 +84,15 @@ void require_positive(double value, const char* field) {
 }
 
 void mesh_and_collect(HexMesh& out, const std::string& msh_path) {
-  gmsh::model::geo::synchronize();
-  gmsh::model::mesh::generate(3);
-  out = collect_hexahedra("generated mesh", 1);
-  if (!msh_path.empty()) gmsh::write(msh_path);  // only a mesh that passed the checks
+  // gmsh throws std::string as well as std::exception (e.g. a cylinder of 1e-300 m).
+  try {
+    gmsh::model::geo::synchronize();
+    gmsh::model::mesh::generate(3);
+    out = collect_hexahedra("generated mesh", 1);
+    if (!msh_path.empty()) gmsh::write(msh_path);  // only a mesh that passed the checks
+  } catch (const std::string& e) {
+    throw InputError("hex mesh", "", "gmsh cannot mesh the cylinder: " + e);
+  }
 }
 
 }  // namespace
@@ -105,6 +111,10 @@ CylinderMeshSpec paper_b_cylinder(int level, double diameter, double height) {
 HexMesh cylinder_hex_mesh(const CylinderMeshSpec& spec, const std::string& msh_path) {
   require_positive(spec.diameter, "diameter");
   require_positive(spec.height, "height");
+  // gmsh's geometry tolerances are absolute: a cylinder far below a nanometre cannot be built
+  // (gmsh throws a std::string for 1e-300 m), nor one beyond a kilometre meshed sensibly.
+  for (const auto& [field, value] : {std::pair<const char*, double>{"diameter", spec.diameter}, {"height", spec.height}})
+    if (value < 1e-9 || value > 1e3) throw InputError("hex mesh", field, "must lie between 1 nm and 1 km");
   if (spec.core_divisions < 1 || spec.ring_divisions < 1 || spec.axial_divisions < 1)
     throw InputError("hex mesh", "divisions", "must be at least 1");
   if (!(spec.core_fraction > 0.05 && spec.core_fraction < 0.65))
@@ -170,12 +180,19 @@ HexMesh box_hex_mesh(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const
 HexMesh read_hex_mesh(const std::string& path, double metres_per_unit) {
   require_positive(metres_per_unit, "units");
   GmshMeshSession session;
+  // gmsh throws std::string as well as std::exception (a truncated file): either is bad input.
   try {
     gmsh::open(path);
+    return collect_hexahedra(path, metres_per_unit);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path, "", std::string("gmsh cannot read it: ") + e.what());
+  } catch (const std::string& e) {
+    throw InputError(path, "", "gmsh cannot read it: " + e);
+  } catch (...) {
+    throw InputError(path, "", "gmsh cannot read it");
   }
-  return collect_hexahedra(path, metres_per_unit);
 }
 
 double hex_mesh_volume(const HexMesh& mesh) {

@@ -17,6 +17,7 @@
 #include <Eigen/Geometry>
 
 #include "core/errors.hpp"
+#include "core/file_transfer.hpp"
 
 namespace latmpm {
 namespace {
@@ -296,7 +297,7 @@ void write_stl(const TriangleMesh& mesh, const std::string& path, double metres_
     out << "endsolid latmpm\n";
   }
   out.flush();
-  if (!out) throw InputError(path, "", "write failed (disk full?)");
+  if (!out) throw OutputError(shown_path(path), "write failed (disk full?)");
 }
 
 TriangleMesh read_stl(const std::string& path, double metres_per_unit) {

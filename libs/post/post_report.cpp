@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/interruption.hpp"
 #include "post/report_rows.hpp"
 #include "post/run_checks.hpp"
 #include "post/run_comparison.hpp"
@@ -21,13 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_text(const fs::path& out_dir, const std::string& relative, const std::string& text, ReportFiles& files) {
-  OutputFile out((out_dir / relative).string(), "-o");
-  {
-    std::ofstream stream(out.temp_path(), std::ios::binary);
-    stream << text;
-    if (!stream.flush()) throw InputError((out_dir / relative).string(), "", "cannot write");
-  }
-  out.commit();
+  write_file_atomically((out_dir / relative).string(), text, "-o");
   files.written.push_back(relative);
 }
 
@@ -120,19 +115,34 @@ ReportFiles write_post_report(const std::string& out_dir_text, const std::vector
     if (!gnuplot.available) continue;
     const std::string tag = ".tmp-" + std::to_string(::getpid());
     const std::string png = spec.name + ".png", svg = spec.name + ".svg";
-    const std::string problem = run_gnuplot((out_dir / "plots").string(), spec.name + ".gp", png + tag, svg + tag);
     const fs::path dir = out_dir / "plots";
-    if (problem.empty() && fs::is_regular_file(dir / (png + tag)) && fs::is_regular_file(dir / (svg + tag))) {
-      fs::rename(dir / (png + tag), dir / png);
-      fs::rename(dir / (svg + tag), dir / svg);
+    const fs::path png_tmp = dir / (png + tag), svg_tmp = dir / (svg + tag);
+    const int png_slot = register_temporary(png_tmp.string());
+    const int svg_slot = register_temporary(svg_tmp.string());
+    const std::string problem = run_gnuplot(dir.string(), spec.name + ".gp", png + tag, svg + tag);
+    // gnuplot can exit 0 after a failed write (a full disk): only complete plots are published.
+    const bool complete = problem.empty() && png_is_complete(png_tmp.string()) && svg_is_complete(svg_tmp.string());
+    std::error_code rename_error;
+    if (complete) {
+      fs::rename(png_tmp, dir / png, rename_error);
+      if (!rename_error) fs::rename(svg_tmp, dir / svg, rename_error);
+    }
+    if (!complete || rename_error) {
+      fs::remove(png_tmp, error);
+      fs::remove(svg_tmp, error);
+    }
+    unregister_temporary(png_slot);
+    unregister_temporary(svg_slot);
+    if (rename_error) throw OutputError((dir / png).string(), "cannot rename the plot into place: " + rename_error.message());
+    if (complete) {
       files.written.push_back("plots/" + png);
       files.written.push_back("plots/" + svg);
       plotted.push_back(spec.name);
+    } else if (problem.empty()) {
+      // gnuplot reported nothing but left a file cut short: the disk is full, not the plot wrong.
+      throw OutputError((dir / png).string(), "gnuplot could not finish the plot (disk full?)");
     } else {
-      fs::remove(dir / (png + tag), error);
-      fs::remove(dir / (svg + tag), error);
-      std::string first_line = problem.substr(0, problem.find_last_not_of("\n") + 1);
-      files.warnings.push_back("gnuplot failed on plots/" + spec.name + ".gp: " + first_line);
+      files.warnings.push_back("gnuplot failed on plots/" + spec.name + ".gp: " + problem.substr(0, problem.find('\n')));
     }
   }
 

@@ -96,8 +96,8 @@ std::vector<MetricCell> metric_cells(const RunAnalysis& a) {
 
 std::string metrics_csv(const std::vector<RunAnalysis>& runs, const ReportContext& context) {
   std::ostringstream out;
-  for (const auto& line : provenance_comments(context)) out << "# " << line << "\n";
-  for (const auto& a : runs) out << "# " << run_comment(a) << "\n";
+  for (const auto& line : provenance_comments(context)) out << "# " << one_line(line) << "\n";
+  for (const auto& a : runs) out << "# " << one_line(run_comment(a)) << "\n";
   out << "# definitions: docs/post.md; empty cell = not applicable or not found (summary.md says why)\n";
   if (runs.empty()) return out.str();
   const std::vector<MetricCell> head = metric_cells(runs.front());
@@ -114,8 +114,8 @@ std::string metrics_csv(const std::vector<RunAnalysis>& runs, const ReportContex
 
 std::string load_displacement_csv(const RunAnalysis& a, const ReportContext& context) {
   std::ostringstream out;
-  for (const auto& line : provenance_comments(context)) out << "# " << line << "\n";
-  out << "# " << run_comment(a) << "\n";
+  for (const auto& line : provenance_comments(context)) out << "# " << one_line(line) << "\n";
+  out << "# " << one_line(run_comment(a)) << "\n";
   out << "displacement[mm]," << a.load_column << "[N]\n";
   for (size_t i = 0; i < a.history.time.size(); ++i)
     out << number_text(a.history.displacement[i] * 1e3, 10) << "," << number_text(a.history.load[i], 10) << "\n";
@@ -128,8 +128,8 @@ std::string load_time_csv(const RunAnalysis& a, const ReportContext& context) {
   const bool velocity = f.velocity.size() == n && n > 0, energy = f.kinetic_energy.size() == n && n > 0;
   const bool potential = f.potential_energy.size() == n;
   std::ostringstream out;
-  for (const auto& line : provenance_comments(context)) out << "# " << line << "\n";
-  out << "# " << run_comment(a) << "\n";
+  for (const auto& line : provenance_comments(context)) out << "# " << one_line(line) << "\n";
+  out << "# " << one_line(run_comment(a)) << "\n";
   out << "time[ms]," << a.load_column << "[N]";
   if (velocity) out << ",flyer_velocity[m/s]";
   if (energy) out << (potential ? ",flyer_energy[J]" : ",flyer_kinetic_energy[J]");

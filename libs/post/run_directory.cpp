@@ -1,8 +1,10 @@
 #include "post/run_directory.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -98,6 +100,13 @@ std::string file_stem(const std::string& label) {
   std::string stem;
   for (char c : label) stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '_';
   if (stem.empty() || stem == "." || stem == "..") stem = "run";
+  // A file name has at most 255 bytes, and ".load_displacement.csv" follows: a long label keeps
+  // its first 80 characters and a hash of the whole, so that distinct labels stay distinct.
+  if (stem.size() > 100) {
+    char hash[20];
+    std::snprintf(hash, sizeof hash, "_%016zx", std::hash<std::string>{}(label));
+    stem = stem.substr(0, 80) + hash;
+  }
   return stem;
 }
 

@@ -72,7 +72,7 @@ void SeriesWriter::append(const std::vector<double>& row) {
     values_[c].push_back(row[c]);
   }
   csv_ << std::endl;  // flush: the row is on disk before the next step
-  if (!csv_) throw InputError(csv_path_, "", "cannot write the series file (disk full?)");
+  if (!csv_) throw OutputError(csv_path_, "write failed (disk full?)");
   ++rows_;
 }
 
@@ -91,6 +91,7 @@ void SeriesWriter::save() const {
       file.set_attribute(dataset, "unit", columns_[c].unit);
       file.set_attribute(dataset, "description", columns_[c].description);
     }
+    file.close();
   }
   out.commit();
 }

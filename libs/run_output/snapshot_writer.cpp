@@ -73,18 +73,13 @@ void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& pa
     file.set_attribute("/particles", "time", s.time);
     file.set_attribute("/particles", "step", int64_t(s.step));
     file.set_attribute("/particles/stress", "components", "xx xy xz yy yz zz");
+    file.close();
   }
   out.commit();
 }
 
 void SnapshotWriter::write_index(const std::vector<XdmfFrame>& frames, const std::string& path) const {
-  OutputFile xmf(path, path);
-  {
-    std::ofstream text(xmf.temp_path(), std::ios::trunc);
-    text << xdmf_time_series(frames);
-    if (!text.flush()) throw InputError(path, "", "cannot write (disk full?)");
-  }
-  xmf.commit();
+  write_file_atomically(path, xdmf_time_series(frames), path);
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
 #include "core/hdf5_file.hpp"
+#include "core/interruption.hpp"
+#include "run_output/checkpoint_checks.hpp"
 #include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "mpm/simulation.hpp"
@@ -31,16 +33,6 @@ std::string format(const char* fmt, double value) {
   char buf[64];
   std::snprintf(buf, sizeof buf, fmt, value);
   return buf;
-}
-
-void write_text_atomically(const std::string& path, const std::string& text) {
-  OutputFile out(path, path);
-  {
-    std::ofstream file(out.temp_path(), std::ios::trunc);
-    file << text;
-    if (!file.flush()) throw InputError(path, "", "cannot write (disk full?)");
-  }
-  out.commit();
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -78,10 +70,13 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
 SolveRun::~SolveRun() = default;
 
 SolveSummary SolveRun::run(const std::string& run_dir) {
+  const InterruptionDeferral stop_between_steps;  // a signal stops the run after its step, saved
   std::error_code ec;
   fs::create_directories(run_dir, ec);
   if (ec || !fs::is_directory(run_dir))
     throw InputError(run_dir, "", "cannot create the run directory" + (ec ? ": " + ec.message() : ""));
+  // Staging files of a run killed outright (SIGKILL) while it saved.
+  for (const std::string& dir : {run_dir, run_dir + "/snapshots"}) remove_stale_temporaries(dir);
 
   // 1. What is run: the resolved scene and the head of the log. A resumed run first takes
   //    the state of its checkpoint.
@@ -94,6 +89,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     if (!fs::is_regular_file(checkpoint_path))
       throw InputError(checkpoint_path, "", "no checkpoint to resume from (the run wrote none)");
     Hdf5File file(checkpoint_path, Hdf5File::Mode::read);
+    check_checkpoint(file, sim);
     sim.load_state(file, "/state");
     const auto names = file.read_strings("/output/frame_files");
     const auto times = file.read_doubles("/output/frame_times");
@@ -116,9 +112,10 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     fs::remove(checkpoint_path, ec);
     if (ec) throw InputError(checkpoint_path, "", "cannot remove the earlier run's checkpoint: " + ec.message());
   }
-  write_text_atomically(run_dir + "/scene.toml",
+  write_file_atomically(run_dir + "/scene.toml",
                         "# Resolved scene written by " + provenance_.tool + " " + provenance_.version +
-                            "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml);
+                            "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml,
+                        run_dir + "/scene.toml");
   RunLog log(run_dir + "/log.txt", options_.resume);
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
@@ -198,6 +195,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       file.set_attribute("/output", "process_wall_seconds", before.wall_seconds + process_wall_seconds());
       file.set_attribute("/output", "step", int64_t(sim.step_count()));
       file.set_attribute("/output", "time", sim.time());
+      file.close();
     }
     out.commit();
     last_checkpoint = wall;
@@ -260,6 +258,14 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   result.particles = particles;
   try {
     while (sim.time() < end * (1 - 1e-12)) {
+      if (interruption_signal()) {
+        result.status = "interrupted";
+        result.signal = interruption_signal();
+        log.line(std::string("stopped by ") + signal_name(result.signal) + " after step " +
+                 std::to_string(sim.step_count()) + ": checkpoint saved, --resume continues");
+        save_checkpoint(seconds_since(start));
+        break;
+      }
       if (scene_.max_steps > 0 && sim.step_count() >= scene_.max_steps) {
         result.status = "max_steps";
         save_checkpoint(seconds_since(start));  // so that --resume can continue it
@@ -304,8 +310,10 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   log.line("status: " + result.status + " steps=" + std::to_string(result.steps) + " time=" +
            format("%.9g", result.simulated_time) + " wall_s=" + format("%.3f", result.wall_seconds) +
            " updates_per_s=" + format("%.4g", result.updates_per_second));
-  write_run_status(run_dir,
-                   outcome(result.status, exit_ok, result.status == "max_steps" ? "run.max_steps reached" : ""),
+  const std::string reason = result.status == "max_steps" ? "run.max_steps reached"
+                             : result.signal           ? std::string("stopped by ") + signal_name(result.signal)
+                                                       : "";
+  write_run_status(run_dir, outcome(result.status, result.signal ? exit_signal_base + result.signal : exit_ok, reason),
                    provenance_);
   return result;
 }

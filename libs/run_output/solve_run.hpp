@@ -10,6 +10,9 @@
 //   checkpoint.h5   the whole solver state every checkpoint.every_steps steps / every_minutes
 //                   minutes and when run.max_steps stops the run (atomically replaced);
 //                   SolveOptions::resume continues from it with the same results
+// SIGINT, SIGTERM or SIGHUP (core/interruption.hpp): the run finishes the step it is in, saves
+// the checkpoint, the series and a snapshot, and returns with status "interrupted" and the
+// signal; --resume continues it as if it had never stopped. A second signal ends it at once.
 // On NumericalError (Stability): the log says why, the series is saved, the state at the
 // failure is snapshotted, then the error is rethrown (exit status 3).
 #pragma once
@@ -35,7 +38,8 @@ struct SolveOptions {
 };
 
 struct SolveSummary {
-  std::string status;  // "finished" or "max_steps"
+  std::string status;  // "finished", "max_steps" or "interrupted"
+  int signal = 0;      // the signal that interrupted the run
   int64_t steps = 0;
   double simulated_time = 0;        // s
   double wall_seconds = 0;          // the stepping loop, outputs included

@@ -136,6 +136,7 @@ struct Scene {
   long snapshot_every = 0;    // steps between particle snapshots, 0 = first and last only
   std::string record_tag = "record";  // point tag of the record layer (paper A Sec. 5.1)
   SolverSpec solver;
+  std::string record_where;  // location of output.record_tag when the scene sets it, else empty
 
   // The scene as run: the document after --set overrides, with every default filled in
   // and point-file paths made absolute. Written to RUN_DIR/scene.toml.

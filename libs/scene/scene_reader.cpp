@@ -259,6 +259,7 @@ void read_output(TableReader output, Scene& s) {
   if (s.series_every < 1) out->fail("series_every", "must be at least 1 (steps between rows)");
   s.snapshot_every = out->integer("snapshot_every", 0);
   if (s.snapshot_every < 0) out->fail("snapshot_every", "must be 0 (first and last only) or positive");
+  if (out->has("record_tag")) s.record_where = out->where("record_tag");
   s.record_tag = out->text("record_tag", "record");
   out->finish();
 }

@@ -9,12 +9,13 @@
 #include "geometry/lattice.hpp"
 #include "levelset/level_set_mesh.hpp"
 #include "levelset/strut_level_set.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
 namespace {
 std::string temp_step(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("latmpm-" + name + ".step")).string();
+  return test::process_scratch("step-export") / (name + ".step");
 }
 }  // namespace
 

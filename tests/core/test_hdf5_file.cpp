@@ -9,15 +9,14 @@
 #include "core/file_transfer.hpp"
 #include "core/hdf5_file.hpp"
 #include "core/provenance.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
 
 namespace {
 std::string scratch(const std::string& name) {
-  auto dir = fs::temp_directory_path() / "latmpm-test-core";
-  fs::create_directories(dir);
-  return (dir / name).string();
+  return test::process_scratch("core") / name;
 }
 }  // namespace
 

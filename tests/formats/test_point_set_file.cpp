@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "points/point_set.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
@@ -26,7 +27,8 @@ PointSet sample() {
 
 TEST_CASE("A point set written to HDF5 reads back exactly", "[formats][points]") {
   PointSet p = sample();
-  const std::string path = (std::filesystem::temp_directory_path() / "latmpm-ps.h5").string();
+  const test::ScratchDir scratch("point-set-file");
+  const std::string path = scratch / "ps.h5";
   {
     Hdf5File f(path, Hdf5File::Mode::create);
     write_point_set(f, p);

@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "geometry/strut_graph.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
@@ -15,7 +16,8 @@ TEST_CASE("A strut graph written to HDF5 reads back exactly", "[formats][geometr
   g.struts = {{0, 1, 0.0008}, {1, 2, 0.0012}};
   g.plates = {{"bottom_plate", {-1, -1, -0.003}, {1, 1, 0}}};
   g.parameters = {{"cell", "tetrahedral"}, {"strut_length", "0.008 m"}};
-  const std::string path = (std::filesystem::temp_directory_path() / "latmpm-sg.h5").string();
+  const test::ScratchDir scratch("strut-graph-file");
+  const std::string path = scratch / "sg.h5";
   {
     Hdf5File f(path, Hdf5File::Mode::create);
     write_strut_graph(f, g);
@@ -42,7 +44,8 @@ TEST_CASE("A strut naming a missing node is refused with the dataset named", "[f
   StrutGraph g;
   g.nodes = {{0, 0, 0}};
   g.struts = {{0, 5, 0.001}};
-  const std::string path = (std::filesystem::temp_directory_path() / "latmpm-sg-bad.h5").string();
+  const test::ScratchDir scratch("strut-graph-file");
+  const std::string path = scratch / "sg-bad.h5";
   {
     Hdf5File f(path, Hdf5File::Mode::create);
     write_strut_graph(f, g);

@@ -8,6 +8,7 @@
 #include "geometry/column.hpp"
 #include "geometry/lattice.hpp"
 #include "geometry/plates.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
@@ -27,7 +28,8 @@ TEST_CASE("The column is a flat-ended cylinder exactly L long between optional e
 }
 
 TEST_CASE("Flat strut ends survive the HDF5 round trip; old files read as round", "[geometry][formats]") {
-  const std::string path = (std::filesystem::temp_directory_path() / "latmpm-column-ends.h5").string();
+  const test::ScratchDir scratch("column-ends");
+  const std::string path = scratch / "column-ends.h5";
   const StrutGraph column = build_column({1.6e-3, 16e-3, 0, 0});
   {
     Hdf5File f(path, Hdf5File::Mode::create);

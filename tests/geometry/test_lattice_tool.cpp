@@ -13,6 +13,7 @@
 #include "core/hdf5_file.hpp"
 #include "core/provenance.hpp"
 #include "geometry/strut_graph.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -38,7 +39,7 @@ Run run_tool(const fs::path& dir, const std::string& args) {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("latmpm-lattice-tool-" + name);
+  const fs::path dir = test::process_scratch("lattice-tool").path() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -12,20 +12,16 @@
 #include "core/hdf5_file.hpp"
 #include "hexmesh/hex_mesh.hpp"
 #include "hexmesh/hex_points.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
+struct Scratch : test::ScratchDir {
+  explicit Scratch(const std::string& name) : test::ScratchDir("hexmesh-" + name), dir(path()) {}
   fs::path dir;
-  explicit Scratch(const std::string& name) {
-    dir = fs::temp_directory_path() / ("latmpm-hexmesh-" + name + "-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  ~Scratch() { fs::remove_all(dir); }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
 };
 
 // Volume of the prism over the regular N-gon inscribed in the circle of radius r.

@@ -11,20 +11,16 @@
 #include "core/provenance.hpp"
 #include "geometry/lattice.hpp"
 #include "synthetic_inputs.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
+struct Scratch : test::ScratchDir {
+  Scratch() : test::ScratchDir("imperfect-tool"), dir(path()) {}
   fs::path dir;
-  Scratch() {
-    dir = fs::temp_directory_path() / ("latmpm-imperfect-test-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-  }
-  ~Scratch() { fs::remove_all(dir); }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
 };
 
 // Runs a shell command line in the scratch directory with the tool on PATH; returns the

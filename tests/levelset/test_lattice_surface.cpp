@@ -12,6 +12,7 @@
 #include "levelset/strut_surface.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/stl_file.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
@@ -38,7 +39,8 @@ TEST_CASE("The STL of a lattice or column is a closed outward solid enclosing th
     graph = build_lattice(spec);
     voxel = spec.strut_diameter / 16;  // 8 voxels per radius
   }
-  const std::string path = (std::filesystem::temp_directory_path() / ("latmpm-surface-" + which + ".stl")).string();
+  const test::ScratchDir scratch("surface");
+  const std::string path = scratch / (which + ".stl");
   write_stl(strut_graph_surface(graph, voxel), path, 1e-3);
   const TriangleMesh mesh = read_stl(path, 1e-3);
   std::filesystem::remove(path);

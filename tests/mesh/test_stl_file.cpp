@@ -14,14 +14,13 @@
 #include "mesh/mesh_checks.hpp"
 #include "mesh/primitive_meshes.hpp"
 #include "mesh/stl_file.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
 namespace {
 
-std::string scratch_path(const std::string& name) {
-  return (std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp")) + "/latmpm-test-mesh-" + name;
-}
+std::string scratch_path(const std::string& name) { return test::process_scratch("mesh") / name; }
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -10,6 +10,7 @@
 #include "core/hdf5_file.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 using namespace latmpm::mpm;
@@ -56,7 +57,8 @@ TEST_CASE("A simulation restored from its saved state continues bit for bit", "[
                        d.reaction[1][2], d.rigid[0].velocity[2], d.rigid[0].displacement[2]});
     return v;
   };
-  const auto path = std::filesystem::temp_directory_path() / ("latmpm-state-" + std::to_string(::getpid()) + ".h5");
+  const latmpm::test::ScratchDir scratch("checkpoint-state");
+  const std::filesystem::path path = scratch / "state.h5";
   auto first = make();
   for (int n = 0; n < 30; ++n) first->step();
   {

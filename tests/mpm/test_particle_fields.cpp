@@ -15,6 +15,7 @@
 #include "mpm/checkpoint_io.hpp"
 #include "mpm/material_model.hpp"
 #include "mpm/particle_fields.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 using namespace latmpm::mpm;
@@ -41,7 +42,7 @@ struct ToyVolumetricMemory {
 };
 
 std::string scratch_file(const std::string& stem) {
-  return (std::filesystem::temp_directory_path() / (stem + "-" + std::to_string(::getpid()) + ".h5")).string();
+  return latmpm::test::process_scratch("particle-fields") / (stem + ".h5");
 }
 
 Particles numbered_particles(size_t n) {

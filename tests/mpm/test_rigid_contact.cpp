@@ -15,6 +15,7 @@
 #include "mpm/rigid_contact.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 using namespace latmpm::mpm;
@@ -282,7 +283,8 @@ TEST_CASE("Contact history survives a checkpoint and the result is the same for 
     v.push_back(d.time);
     return v;
   };
-  const auto path = std::filesystem::temp_directory_path() / ("latmpm-contact-" + std::to_string(::getpid()) + ".h5");
+  const latmpm::test::ScratchDir scratch("rigid-contact");
+  const std::filesystem::path path = scratch / "contact.h5";
   auto first = make(2), single = make(1);
   for (int n = 0; n < 200; ++n) first->step(), single->step();
   {

@@ -10,6 +10,7 @@
 
 #include "core/command_line.hpp"
 #include "synthetic_run.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -18,9 +19,7 @@ namespace {
 
 fs::path scratch() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("latmpm-post-tool-" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
+    const fs::path d = test::process_scratch("post-tool").path();
     // A compression run that finished, and one that failed half-way.
     test::SeriesSpec s;
     for (int i = 0; i <= 200; ++i) {

@@ -12,6 +12,7 @@
 #include "post/run_comparison.hpp"
 #include "post/run_directory.hpp"
 #include "synthetic_run.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 using namespace latmpm::post;
@@ -23,7 +24,7 @@ namespace {
 // fraction of the strain energy F u / 2 (the ratio the quasi-static check must find); the
 // external work W such that the balance error |KE + SE − W| / W is 0.1 u / u_end.
 RunAnalysis linear_run(const std::string& name, double stiffness, double ke_fraction, const std::string& cell = "tetrahedral") {
-  const fs::path dir = fs::temp_directory_path() / ("latmpm-comparison-test-" + std::to_string(::getpid())) / name;
+  const fs::path dir = test::process_scratch("comparison").path() / name;
   fs::remove_all(dir);
   test::SeriesSpec s;
   std::vector<double> kinetic, strain, work;

@@ -11,6 +11,7 @@
 #include "post/run_directory.hpp"
 #include "post/series_table.hpp"
 #include "synthetic_run.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 using namespace latmpm::post;
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("latmpm-post-test-" + std::to_string(::getpid())) / name;
+  const fs::path d = test::process_scratch("post-runs").path() / name;
   fs::remove_all(d);
   return d;
 }

@@ -11,6 +11,7 @@
 #include "core/provenance.hpp"
 #include "run_output/run_log.hpp"
 #include "run_output/series_writer.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -18,9 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string scratch(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("latmpm-run-output-" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return (d / name).string();
+  return test::process_scratch("run-output") / name;
 }
 
 std::vector<std::string> lines_of(const std::string& path) {

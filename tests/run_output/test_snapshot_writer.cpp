@@ -10,6 +10,7 @@
 #include "core/hdf5_file.hpp"
 #include "core/provenance.hpp"
 #include "run_output/snapshot_writer.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string fresh_run_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("latmpm-snapshots-" + std::to_string(::getpid())) / name;
+  fs::path d = test::process_scratch("snapshots").path() / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d.string();

@@ -8,13 +8,13 @@
 
 #include "core/hdf5_file.hpp"
 #include "points/point_set.hpp"
+#include "scratch_dir.hpp"
 
 namespace latmpm::test {
 
-inline std::string scratch_points_dir(const std::string& prefix) {
+inline std::string scratch_points_dir(const std::string& label) {
   namespace fs = std::filesystem;
-  fs::path d = fs::temp_directory_path() / (prefix + std::to_string(::getpid()));
-  fs::create_directories(d);
+  const fs::path d = process_scratch(label).path();
   PointSet p;
   p.position = {{0, 0, 0}};
   p.volume = {1e-9};

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string scratch_dir() {
-  static const std::string dir = test::scratch_points_dir("latmpm-contact-scene-");
+  static const std::string dir = test::scratch_points_dir("contact-scene");
   return dir;
 }
 

@@ -10,6 +10,7 @@
 #include "core/provenance.hpp"
 #include "points/point_set.hpp"
 #include "scene/scene_points.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 namespace fs = std::filesystem;
@@ -35,9 +36,7 @@ PointSet line_of_points(const std::vector<std::string>& bodies, int n, double fi
 }
 
 std::string write(const PointSet& p, const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("latmpm-scene-points-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::string path = (dir / name).string();
+  std::string path = test::process_scratch("scene-points") / name;
   Hdf5File f(path, Hdf5File::Mode::create);
   write_point_set(f, p);
   write_provenance(f, Provenance{"latmpm-test", "0", "make " + name, {}, "2024-01-01T00:00:00Z", {}});

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string scratch_dir() {
-  static const std::string dir = test::scratch_points_dir("latmpm-scene-test-");
+  static const std::string dir = test::scratch_points_dir("scene-reader");
   return dir;
 }
 

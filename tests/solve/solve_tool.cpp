@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scratch_dir.hpp"
 #include "tiny_column.hpp"
 
 namespace fs = std::filesystem;
@@ -38,8 +39,7 @@ snapshot_every = 100
 
 fs::path scratch() {
   static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("latmpm-solve-test-" + std::to_string(::getpid()));
-    fs::create_directories(d);
+    const fs::path d = process_scratch("solve-tool").path();
     write_points(tiny_column({}), (d / "column.h5").string());
     return d;
   }();

@@ -18,12 +18,13 @@
 #include "voxelize/resolution_guard.hpp"
 #include "voxelize/solid_mesh_gate.hpp"
 #include "voxelize/voxelize.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
 namespace {
 
-std::string scratch(const std::string& name) { return "/tmp/latmpm-test-voxelize-" + name; }
+std::string scratch(const std::string& name) { return test::process_scratch("voxelize") / name; }
 
 double total_volume(const PointSet& p) {
   double v = 0;

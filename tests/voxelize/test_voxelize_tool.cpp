@@ -14,12 +14,13 @@
 #include "mesh/primitive_meshes.hpp"
 #include "mesh/stl_file.hpp"
 #include "points/point_set.hpp"
+#include "scratch_dir.hpp"
 
 using namespace latmpm;
 
 namespace {
 
-const std::string dir = "/tmp/latmpm-test-voxelize-tool";
+const std::string dir = test::process_scratch("voxelize-tool").string();
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
 

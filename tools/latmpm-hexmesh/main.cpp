@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
 #include "core/hdf5_file.hpp"
+#include "core/interruption.hpp"
 #include "core/provenance.hpp"
 #include "core/tool_main.hpp"
 #include "core/units.hpp"
@@ -57,10 +58,10 @@ void declare_options(latmpm::CommandLine& cl) {
 latmpm::CylinderMeshSpec cylinder_spec(const latmpm::CommandLine& cl) {
   using namespace latmpm;
   for (const char* needed : {"diameter", "height"})
-    if (!cl.given(needed)) throw InputError(std::string("--") + needed, "", "required with --cylinder");
+    if (!cl.given(needed)) throw UsageError(std::string("--") + needed + ": required with --cylinder");
   const double d = cl.quantity("diameter", dimension::length), h = cl.quantity("height", dimension::length);
   if (cl.given("level") == cl.given("divisions"))
-    throw InputError("--level", "", "give exactly one of --level and --divisions with --cylinder");
+    throw UsageError("--level: give exactly one of --level and --divisions with --cylinder");
   if (!(d > 0)) throw InputError("--diameter", "", "must be positive");
   if (!(h > 0)) throw InputError("--height", "", "must be positive");
   if (cl.given("level")) {
@@ -90,19 +91,23 @@ int run(int argc, char** argv) {
   const bool report = !cl.flag_set("quiet");
   const bool cylinder = cl.flag_set("cylinder");
   const bool has_input = !cl.text("input").empty();
-  if (cylinder == has_input) throw InputError("input", "", "give either a .msh file or --cylinder");
-  if (!cl.given("cell")) throw InputError("--cell", "", "required: the solver's grid cell size, e.g. 0.4mm");
-  if (!cl.given("output")) throw InputError("--output", "", "required: -o FILE (or - for stdout)");
+  if (cylinder == has_input) throw UsageError("give either a .msh file or --cylinder");
+  if (!cl.given("cell")) throw UsageError("--cell: required: the solver's grid cell size, e.g. 0.4mm");
+  if (!cl.given("output")) throw UsageError("--output: required: -o FILE (or - for stdout)");
   const double cell = cl.quantity("cell", dimension::length);
   if (!(cell > 0)) throw InputError("--cell", "", "must be positive");
   if (has_input) {
     for (const char* cylinder_only : {"diameter", "height", "level", "divisions", "msh"})
       if (cl.given(cylinder_only)) throw InputError(std::string("--") + cylinder_only, "", "applies only with --cylinder");
-    if (!cl.given("units")) throw InputError("--units", "", "required for a .msh input (its length unit, e.g. mm)");
+    if (!cl.given("units")) throw UsageError("--units: required for a .msh input (its length unit, e.g. mm)");
   } else if (cl.given("units")) {
     throw InputError("--units", "", "applies only to a .msh input");
   }
   const CylinderMeshSpec spec = cylinder ? cylinder_spec(cl) : CylinderMeshSpec{};
+  if (cl.text("output") != "-")
+    refuse_aliased_outputs({{"--output", cl.text("output")},
+                            {"its XDMF view", xdmf_path_beside(cl.text("output"))},
+                            {"--msh", cl.text("msh")}});
   OutputFile output(cl.text("output"), "--output");
   std::unique_ptr<OutputFile> xdmf, msh;
   if (!output.to_stdout()) xdmf = std::make_unique<OutputFile>(xdmf_path_beside(output.target()), "--output");
@@ -112,8 +117,10 @@ int run(int argc, char** argv) {
   // 2. Mesh → points.
   Provenance provenance = Provenance::for_run("latmpm-hexmesh", argc, argv);
   HexMesh mesh;
+  // gmsh picks the format by the extension: the mesh is written beside msh's staging file.
+  const std::unique_ptr<TemporaryPath> msh_file = msh ? std::make_unique<TemporaryPath>(msh->temp_path() + ".msh") : nullptr;
   if (cylinder) {
-    mesh = cylinder_hex_mesh(spec, msh ? msh->temp_path() + ".msh" : "");
+    mesh = cylinder_hex_mesh(spec, msh_file ? msh_file->path() : "");
   } else {
     provenance.inputs = {cl.text("input")};
     const double metres_per_unit = parse_quantity("1" + cl.text("units"), dimension::length, "--units");
@@ -133,14 +140,15 @@ int run(int argc, char** argv) {
     Hdf5File file(output.temp_path(), Hdf5File::Mode::create);
     write_provenance(file, provenance);
     write_point_set(file, points);
+    file.close();
   }
   if (xdmf) {
     const std::string target = output.target();
     const std::string h5_name = target.substr(target.find_last_of('/') + 1);
-    std::ofstream(xdmf->temp_path()) << xdmf_polyvertex(h5_name, points.size(), "/points/position",
-                                                        point_set_xdmf_attributes({}));
+    xdmf->write_text(xdmf_polyvertex(h5_name, points.size(), "/points/position", point_set_xdmf_attributes({})));
   }
-  if (msh) std::rename((msh->temp_path() + ".msh").c_str(), msh->temp_path().c_str());
+  if (msh && std::rename(msh_file->path().c_str(), msh->temp_path().c_str()) != 0)
+    throw OutputError(cl.text("msh"), "cannot move the mesh into place");
   output.commit();
   if (xdmf) xdmf->commit();
   if (msh) msh->commit();

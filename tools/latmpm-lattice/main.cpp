@@ -93,7 +93,7 @@ latmpm::StrutGraph column_from(const latmpm::CommandLine& cl) {
               "footprint", "plates", "no-plates"},
          "does not apply to --column (use --diameter, --length, --end-plates)");
   for (const char* option : {"diameter", "length"})
-    if (!cl.given(option)) throw InputError(std::string("--") + option, "", "required with --column");
+    if (!cl.given(option)) throw UsageError(std::string("--") + option + ": required with --column");
   ColumnSpec spec;
   spec.diameter = cl.quantity("diameter", dimension::length);
   spec.length = cl.quantity("length", dimension::length);
@@ -116,9 +116,9 @@ latmpm::StrutGraph lattice_from(const latmpm::CommandLine& cl) {
   } else {
     if (cl.given("cell")) spec.cell = cl.text("cell");
     for (const char* option : {"strut-length", "strut-diameter"})
-      if (!cl.given(option)) throw InputError(std::string("--") + option, "", "required (or use --preset)");
+      if (!cl.given(option)) throw UsageError(std::string("--") + option + ": required (or use --preset)");
     if (cell_uses_angle(spec.cell) && !cl.given("angle"))
-      throw InputError("--angle", "", "required for the " + spec.cell + " cell (or use --preset)");
+      throw UsageError("--angle: required for the " + spec.cell + " cell (or use --preset)");
   }
   if (!cell_uses_angle(spec.cell)) refuse(cl, {"stacking", "footprint"}, "applies only to --cell tetrahedral");
   if (cl.given("strut-length")) spec.strut_length = cl.quantity("strut-length", dimension::length);
@@ -223,6 +223,7 @@ int run(int argc, char** argv) {
   const double stl_voxel = cl.given("voxel") ? voxel_size(cl, "voxel", graph) : 2 * radius / 10;
   const double summary_voxel =
       cl.given("summary-voxel") ? voxel_size(cl, "summary-voxel", graph) : 2 * radius / 16;
+  refuse_aliased_outputs({{"--output", cl.text("output")}, {"--stl", cl.text("stl")}, {"--step", cl.text("step")}});
   std::unique_ptr<OutputFile> h5_out, stl_out, step_out;
   if (cl.given("output")) h5_out = std::make_unique<OutputFile>(cl.text("output"), "--output");
   if (cl.given("stl")) stl_out = std::make_unique<OutputFile>(cl.text("stl"), "--stl");
@@ -234,6 +235,7 @@ int run(int argc, char** argv) {
     Hdf5File file(h5_out->temp_path(), Hdf5File::Mode::create);
     write_provenance(file, Provenance::for_run("latmpm-lattice", argc, argv));
     write_strut_graph(file, graph);
+    file.close();
   }
 
   // 4. Surfaces.

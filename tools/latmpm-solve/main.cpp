@@ -7,6 +7,7 @@
 
 #include "core/command_line.hpp"
 #include "core/errors.hpp"
+#include "core/interruption.hpp"
 #include "core/provenance.hpp"
 #include "core/tool_main.hpp"
 #include "run_output/run_status.hpp"
@@ -35,6 +36,10 @@ every_minutes minutes (default 10 minutes) and when run.max_steps stops it;
 series and snapshots, with the same results as a run that never stopped (--set may change
 run.max_steps, run.end, output and checkpoint keys for the rest of the run).
 
+Stopping: SIGINT (Ctrl-C), SIGTERM or SIGHUP end the run after the current step with the
+checkpoint, series and a snapshot saved; --resume continues it exactly. A second signal ends
+it at once (the last periodic checkpoint is kept).
+
 The run directory also receives status.toml, written atomically at the start ("running") and
 at the end of every run, a failed one too, and when bad input stops a run whose directory
 exists: status, exit status, reason, steps, simulated time, wall and CPU seconds, particle-
@@ -44,7 +49,9 @@ updates per second, points and peak memory. Pipelines read it, not the log.
 one name a line: ask the tool, not the docs.
 
 Exit status: 0 done, 1 usage, 2 bad scene or points (FILE:LINE: key: problem; nothing
-written), 3 numerical failure (the log says why; series and snapshots so far are kept).
+written), 3 numerical failure (the log says why; series and snapshots so far are kept),
+5 an output could not be written (disk full), 128+N stopped by signal N (130 Ctrl-C, 143
+SIGTERM) with the checkpoint saved (docs/robustness.md).
 
 Sample runs (a 16 mm column, 1.6 mm thick, compressed by 1 mm on a coarse 0.8 mm grid):
   $ latmpm-lattice --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5
@@ -132,6 +139,11 @@ int solve(int argc, char** argv) {
     if (!run_dir.empty() && !cl.flag_set("check") && std::filesystem::is_directory(run_dir))
       write_run_status(run_dir, outcome_without_run("bad_input", exit_bad_input, e.what()), provenance);
     throw;
+  }
+  if (s.signal) {
+    std::fprintf(stderr, "%s: stopped by %s at step %lld, checkpoint saved: latmpm-solve --resume %s continues\n",
+                 cl.tool().c_str(), signal_name(s.signal), static_cast<long long>(s.steps), run_dir.c_str());
+    return exit_signal_base + s.signal;
   }
   std::printf("%s: %s, %lld steps, t = %.6g s, wall %.2f s, %.3g particle-updates/s, %zu particles -> %s\n",
               cl.tool().c_str(), s.status.c_str(), static_cast<long long>(s.steps), s.simulated_time,

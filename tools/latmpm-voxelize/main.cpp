@@ -196,6 +196,8 @@ int run(int argc, char** argv) {
   const double max_memory =
       cl.given("max-memory") ? parse_bytes(cl.text("max-memory"), "--max-memory") : physical_memory_bytes();
   InputFile input(cl.text("input"), "input");
+  if (cl.text("output") != "-")
+    refuse_aliased_outputs({{"--output", cl.text("output")}, {"its XDMF view", xdmf_path_beside(cl.text("output"))}});
   OutputFile output(cl.text("output"), "--output");
   std::unique_ptr<OutputFile> xdmf;
   if (!output.to_stdout()) xdmf = std::make_unique<OutputFile>(xdmf_path_beside(output.target()), "--output");
@@ -265,14 +267,15 @@ int run(int argc, char** argv) {
     Hdf5File file(output.temp_path(), Hdf5File::Mode::create);
     write_provenance(file, provenance);
     write_point_set(file, result.points);
+    file.close();
   }
   if (xdmf) {
     std::vector<std::string> tag_names;
     for (const auto& entry : result.points.tags) tag_names.push_back(entry.first);
     const std::string target = output.target();
     const std::string h5_name = target.substr(target.find_last_of('/') + 1);
-    std::ofstream(xdmf->temp_path()) << xdmf_polyvertex(h5_name, result.points.size(), "/points/position",
-                                                        point_set_xdmf_attributes(tag_names));
+    xdmf->write_text(xdmf_polyvertex(h5_name, result.points.size(), "/points/position",
+                                     point_set_xdmf_attributes(tag_names)));
   }
   output.commit();
   if (xdmf) xdmf->commit();
