@@ -1,5 +1,7 @@
 #include "mpm/checkpoint_io.hpp"
 
+#include <cmath>
+
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 
@@ -106,9 +108,17 @@ void CheckpointReader::expect_shape(const std::string& name, size_t count, int c
                      "has " + std::to_string(cols) + " values per row, expected " + std::to_string(components));
 }
 
+// Every real number of a checkpoint is a state the solver reached, so finite: a NaN or an
+// infinity is a corrupted file, refused with the dataset named before it is used.
+std::vector<double> CheckpointReader::finite_values(const std::string& name, std::vector<double> values) const {
+  for (double v : values)
+    if (!std::isfinite(v)) throw InputError(file_.path(), path(name), "holds a value that is not finite");
+  return values;
+}
+
 double CheckpointReader::scalar(const std::string& name) const {
   expect_shape(name, 1, 1);
-  return file_.read_doubles(path(name))[0];
+  return finite_values(name, file_.read_doubles(path(name)))[0];
 }
 
 int64_t CheckpointReader::integer(const std::string& name) const {
@@ -142,7 +152,7 @@ std::vector<T> CheckpointReader::rows(const std::string& name, size_t count) con
     return std::vector<uint32_t>(v.begin(), v.end());
   } else {
     expect_shape(name, count, CheckpointCodec<T>::components);
-    return unflatten<T>(file_.read_doubles(path(name)));
+    return unflatten<T>(finite_values(name, file_.read_doubles(path(name))));
   }
 }
 

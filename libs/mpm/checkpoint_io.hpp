@@ -75,6 +75,7 @@ class CheckpointReader {
   std::string path(const std::string& name) const { return group_ + "/" + name; }
   // The dataset's dims, checked against count rows of `components` values.
   void expect_shape(const std::string& name, size_t count, int components) const;
+  std::vector<double> finite_values(const std::string& name, std::vector<double> values) const;
   const Hdf5File& file_;
   std::string group_;
 };

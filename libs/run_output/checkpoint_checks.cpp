@@ -103,9 +103,8 @@ void check_checkpoint(const Hdf5File& f, const mpm::Simulation& sim) {
     if (f.exists(g + "/solver/" + name)) scalar(f, g + "/solver/" + name);
   for (const char* name : {"/solver/body_displacement", "/solver/reaction", "/solver/initial_centre"})
     read_checked_doubles(f, g + name, {nb, 3});
-  for (const char* name : {"/rigid/displacement", "/rigid/velocity", "/rigid/reaction"})
-    read_checked_doubles(f, g + name, {nr, 3});
-  read_checked_doubles(f, g + "/rigid/work", {nr});
+  // Boundaries (boundaries/<name>/): each one's reader checks its rows' shapes and that every
+  // value is finite (mpm/checkpoint_io.hpp), before anything is changed.
 
   // Outputs: the snapshots written so far.
   const size_t frames = read_checked_strings(f, "/output/frame_files").size();
