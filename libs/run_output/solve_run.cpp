@@ -14,6 +14,7 @@
 #include "run_output/checkpoint_checks.hpp"
 #include "core/progress.hpp"
 #include "core/tool_main.hpp"
+#include "core/number_text.hpp"
 #include "mpm/simulation.hpp"
 #include "points/point_set.hpp"
 #include "run_output/run_log.hpp"
@@ -29,11 +30,6 @@ namespace fs = std::filesystem;
 namespace latmpm {
 namespace {
 
-std::string format(const char* fmt, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, value);
-  return buf;
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -61,9 +57,9 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
   for (const auto& r : solver_rigid_bodies(scene_)) {
     simulation_->add_rigid_body(r);
     points_summary_ += "rigid body " + r.name + " (" + mpm::to_string(r.motion) + " " + mpm::to_string(r.shape) +
-                       (r.motion == mpm::RigidMotion::free ? ", " + format("%g", r.mass) + " kg" : std::string()) +
-                       ", velocity " + format("%g", r.velocity.x()) + " " + format("%g", r.velocity.y()) + " " +
-                       format("%g", r.velocity.z()) + " m/s)\n";
+                       (r.motion == mpm::RigidMotion::free ? ", " + format_number("%g", r.mass) + " kg" : std::string()) +
+                       ", velocity " + format_number("%g", r.velocity.x()) + " " + format_number("%g", r.velocity.y()) + " " +
+                       format_number("%g", r.velocity.z()) + " m/s)\n";
   }
 }
 
@@ -119,7 +115,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   RunLog log(run_dir + "/log.txt", options_.resume);
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
-             format("%.9g", sim.time()) + " s (" + format("%.1f", wall_before) + " s of wall time before)");
+             format_number("%.9g", sim.time()) + " s (" + format_number("%.1f", wall_before) + " s of wall time before)");
   const double end = end_time(scene_);
   const Eigen::Vector3d axis = loading_axis(scene_);
   const size_t particles = sim.particles().size();
@@ -129,20 +125,20 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   for (const auto& f : scene_.point_files) log.line("points: " + f.path);
   std::istringstream summary(points_summary_);
   for (std::string l; std::getline(summary, l);) log.line(l);
-  log.line("grid: cell " + format("%g", scene_.cell_size) + " m, shape " + to_string(scene_.shape) +
-           ", scheme " + to_string(scene_.scheme) + ", flip " + format("%g", scene_.flip));
+  log.line("grid: cell " + format_number("%g", scene_.cell_size) + " m, shape " + to_string(scene_.shape) +
+           ", scheme " + to_string(scene_.scheme) + ", flip " + format_number("%g", scene_.flip));
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();
   const double dt0 = scene_.dt > 0 ? scene_.dt : stable;
-  log.line("time: " + (scene_.dt > 0 ? "fixed dt " + format("%g", scene_.dt) + " s"
-                                     : "cfl " + format("%g", scene_.cfl)) +
-           ", stable dt " + format("%.4g", stable) + " s at the start, mass scaling " +
-           format("%g", scene_.mass_scaling));
-  log.line("end: t = " + format("%g", end) + " s, about " + format("%.0f", std::ceil(end / dt0)) +
+  log.line("time: " + (scene_.dt > 0 ? "fixed dt " + format_number("%g", scene_.dt) + " s"
+                                     : "cfl " + format_number("%g", scene_.cfl)) +
+           ", stable dt " + format_number("%.4g", stable) + " s at the start, mass scaling " +
+           format_number("%g", scene_.mass_scaling));
+  log.line("end: t = " + format_number("%g", end) + " s, about " + format_number("%.0f", std::ceil(end / dt0)) +
            " steps" + (scene_.max_steps ? ", at most " + std::to_string(scene_.max_steps) : ""));
-  log.line("loading axis: (" + format("%g", axis.x()) + ", " + format("%g", axis.y()) + ", " +
-           format("%g", axis.z()) + "), record area " + format("%g", sim.record_area()) + " m^2");
+  log.line("loading axis: (" + format_number("%g", axis.x()) + ", " + format_number("%g", axis.y()) + ", " +
+           format_number("%g", axis.z()) + "), record area " + format_number("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
   const auto columns = solver_series_columns(has_flyer(sim));
@@ -226,8 +222,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   };
   write_run_status(run_dir, outcome("running", -1, ""), provenance_);
   auto status_text = [&] {
-    return "step " + std::to_string(sim.step_count()) + ", t = " + format("%.4g", sim.time()) + " s, " +
-           format("%.3g", rate()) + " particle-updates/s";
+    return "step " + std::to_string(sim.step_count()) + ", t = " + format_number("%.4g", sim.time()) + " s, " +
+           format_number("%.3g", rate()) + " particle-updates/s";
   };
   sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
     if (d.step % scene_.series_every == 0) {
@@ -247,7 +243,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     if (wall - last_log >= options_.log_interval_s) {
       last_log = wall;
       const double done = d.time / end;
-      log.line("progress: " + format("%.1f", 100 * done) + "%, " + status_text() + ", left ~" +
+      log.line("progress: " + format_number("%.1f", 100 * done) + "%, " + status_text() + ", left ~" +
                format_duration(estimate_time_left(wall, time_at_start, d.time, end)));
     }
   });
@@ -292,7 +288,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       log.line(std::string("could not save the state: ") + save_error.what());
     }
     log.line("status: failed steps=" + std::to_string(sim.step_count()) + " time=" +
-             format("%.9g", sim.time()) + " wall_s=" + format("%.3f", seconds_since(start)));
+             format_number("%.9g", sim.time()) + " wall_s=" + format_number("%.3f", seconds_since(start)));
     write_run_status(run_dir, outcome(numerical ? "failed" : "error", numerical ? exit_numerical : exit_internal, reason),
                      provenance_);
     throw;
@@ -308,8 +304,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   result.updates_per_second = rate();
   progress.finish(status_text());
   log.line("status: " + result.status + " steps=" + std::to_string(result.steps) + " time=" +
-           format("%.9g", result.simulated_time) + " wall_s=" + format("%.3f", result.wall_seconds) +
-           " updates_per_s=" + format("%.4g", result.updates_per_second));
+           format_number("%.9g", result.simulated_time) + " wall_s=" + format_number("%.3f", result.wall_seconds) +
+           " updates_per_s=" + format_number("%.4g", result.updates_per_second));
   const std::string reason = result.status == "max_steps" ? "run.max_steps reached"
                              : result.signal           ? std::string("stopped by ") + signal_name(result.signal)
                                                        : "";

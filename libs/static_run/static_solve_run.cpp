@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/number_text.hpp"
 #include "run_output/run_log.hpp"
 #include "run_output/run_status.hpp"
 #include "run_output/series_writer.hpp"
@@ -19,11 +20,6 @@
 namespace latmpm {
 
 namespace {
-std::string format(const char* fmt, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, value);
-  return buf;
-}
 
 const std::vector<SeriesColumn> static_columns = {
     {"step", "1", "converged load increments"},
@@ -100,16 +96,16 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   log.line("command: " + provenance.command_line);
   log.line("scene: " + scene.source + " (resolved copy: scene.toml)");
   log.line("static solve (paper C Sec. 3.3): projected Newton on the narrow band, linear solver " +
-           scene.solver.linear_solver + ", tolerance " + format("%g", scene.solver.tolerance));
+           scene.solver.linear_solver + ", tolerance " + format_number("%g", scene.solver.tolerance));
   log.line("points: " + std::to_string(problem.point_count()) + " material, band nodes " +
            std::to_string(problem.band().node_count()) + " (" + std::to_string(problem.dof_count()) +
            " unknowns), support nodes " + std::to_string(sp.loading.support_nodes.size()) + ", platen nodes " +
            std::to_string(sp.loading.platen_nodes.size()) + ", shape " + to_string(scene.shape) + ", cell " +
-           format("%g", scene.cell_size) + " m");
-  log.line("loading: travel " + format("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
+           format_number("%g", scene.cell_size) + " m");
+  log.line("loading: travel " + format_number("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
            " increments" +
            (sp.contact_gap > 0 ? ", from contact (the rigid platen first closed a gap of " +
-                                     format("%g", sp.contact_gap) + " m)"
+                                     format_number("%g", sp.contact_gap) + " m)"
                                : ""));
 
   double speed = 0;  // of the one driven body (checked by make_static_problem)
@@ -130,11 +126,11 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
                    double(pt.newton_iterations), double(pt.linear_iterations), pt.residual, pt.min_jacobian,
                    pt.stable ? 1.0 : 0.0});
     snapshots.write(static_snapshot(points, scene, sp, u, pt.travel, step, pt.travel / speed));
-    const std::string line = "increment " + std::to_string(step) + ": travel " + format("%.6g", pt.travel) +
-                             " m, load " + format("%.6g", pt.load) + " N, Newton " +
+    const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
+                             " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
                              std::to_string(pt.newton_iterations) + ", linear " +
-                             std::to_string(pt.linear_iterations) + ", residual " + format("%.2e", pt.residual) +
-                             ", min J " + format("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
+                             std::to_string(pt.linear_iterations) + ", residual " + format_number("%.2e", pt.residual) +
+                             ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
     log.line(line);
     if (progress) std::cerr << "latmpm-solve: " << line << "\n";
   };
@@ -151,9 +147,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   if (path.ended) {
     s.end_travel = path.end_travel;
     s.end_load = path.end_load;
-    log.line("the static path ends (" + path.end_reason + ") at travel " + format("%.6g", path.end_travel) +
-             " m, load " + format("%.6g", path.end_load) + " N (last stable: " +
-             format("%.6g", path.last_stable_travel) + " m, " + format("%.6g", path.last_stable_load) + " N)");
+    log.line("the static path ends (" + path.end_reason + ") at travel " + format_number("%.6g", path.end_travel) +
+             " m, load " + format_number("%.6g", path.end_load) + " N (last stable: " +
+             format_number("%.6g", path.last_stable_travel) + " m, " + format_number("%.6g", path.last_stable_load) + " N)");
   }
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
@@ -170,9 +166,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   write_run_status(run_dir, outcome, provenance);
   // latmpm-post reads "status:" (finished / failed) and "stopped:" (why) lines.
   if (path.ended)
-    log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format("%.6g", path.end_travel) + " m");
+    log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format_number("%.6g", path.end_travel) + " m");
   log.line(std::string("status: ") + (s.status == "not converged" ? "failed" : "finished") + " (static " + s.status +
-           "), " + std::to_string(s.increments) + " increments, wall " + format("%.2f", s.wall_seconds) + " s");
+           "), " + std::to_string(s.increments) + " increments, wall " + format_number("%.2f", s.wall_seconds) + " s");
   return s;
 }
 
