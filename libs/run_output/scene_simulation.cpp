@@ -26,6 +26,19 @@ mpm::Settings solver_settings(const Scene& scene, int threads) {
   return s;
 }
 
+mpm::MaterialParameters solver_material(const MaterialSpec& m, const std::string& where, const std::string& field) {
+  mpm::MaterialParameters p;
+  p.kind = mpm::parse_material_kind(to_string(m.model), where, field + ".model");
+  p.young_modulus = m.youngs_modulus;
+  p.poisson_ratio = m.poisson_ratio;
+  p.density = m.density;
+  p.initial_yield = m.initial_yield;
+  p.saturation_yield = m.saturation_yield;
+  p.saturation_rate = m.saturation_rate;
+  p.linear_hardening = m.linear_hardening;
+  return p;
+}
+
 std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
   const MaterialSpec* fallback = nullptr;
   for (const auto& b : scene.bodies)
@@ -39,14 +52,7 @@ std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
     if (!m)
       throw InputError(b.where, "bodies." + b.name + ".material",
                        "the scene has no deformable body to take a density from; give this body a material");
-    s.material.kind = mpm::parse_material_kind(to_string(m->model), b.where, "bodies." + b.name + ".material.model");
-    s.material.young_modulus = m->youngs_modulus;
-    s.material.poisson_ratio = m->poisson_ratio;
-    s.material.density = m->density;
-    s.material.initial_yield = m->initial_yield;
-    s.material.saturation_yield = m->saturation_yield;
-    s.material.saturation_rate = m->saturation_rate;
-    s.material.linear_hardening = m->linear_hardening;
+    s.material = solver_material(*m, b.where, "bodies." + b.name + ".material");
     s.velocity = b.velocity;
     s.hold_tag = b.hold_tag;
     s.hold_slip = b.hold_slip;
