@@ -6,16 +6,20 @@
 #include "core/errors.hpp"
 #include "mpm/material.hpp"
 #include "mpm/shape_function_kind.hpp"
+#include "run_output/scene_simulation.hpp"
 
 namespace latmpm {
 
 namespace {
-mpm::MaterialParameters material_of(const MaterialSpec& m) {
-  mpm::MaterialParameters p;
-  p.kind = m.model == MaterialModel::neo_hookean ? mpm::MaterialKind::neo_hookean : mpm::MaterialKind::linear_elastic;
-  p.young_modulus = m.youngs_modulus;
-  p.poisson_ratio = m.poisson_ratio;
-  p.density = m.density;
+// The static solver has energies for the elastic models only (statics/elastic_energy.hpp):
+// a model with history (J2) has no potential to minimise, so it is refused, not replaced.
+mpm::MaterialParameters static_material(const BodySpec& body) {
+  const std::string field = "bodies." + body.name + ".material";
+  const mpm::MaterialParameters p = solver_material(body.material, body.where, field);
+  if (p.kind != mpm::MaterialKind::linear_elastic && p.kind != mpm::MaterialKind::neo_hookean)
+    throw InputError(body.where, field + ".model",
+                     std::string("the static solver has no energy for \"") + to_string(body.material.model) +
+                         "\" (linear_elastic or neo_hookean)");
   return p;
 }
 }  // namespace
@@ -46,7 +50,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
     const BodySpec& body = scene.bodies[b];
     if (body.role == BodyRole::deformable) {
       energy_of_body[b] = int(energies.size());
-      energies.push_back(statics::ElasticEnergy::from(material_of(body.material)));
+      energies.push_back(statics::ElasticEnergy::from(static_material(body)));
     } else if (body.role == BodyRole::driven) {
       if (driven) throw InputError(body.where, "bodies." + body.name + ".role", "the static solver drives one body");
       driven = &body;

@@ -122,6 +122,9 @@ TEST_CASE("Bad scenes exit with status 2 naming the line and key, writing nothin
       {"role = \"fixed\"", "role = \"clamped\"", "bad.toml:15: bodies.bottom_plate.role"},
       // A held layer whose tag no point of the body carries (the column's is "record").
       {"\"1050kg/m^3\" }", "\"1050kg/m^3\" }\nhold = { tag = \"recrod\" }", "bad.toml:14: bodies.column.hold.tag"},
+      // The static solver minimises an elastic energy: a model with history has none.
+      {"\"1050kg/m^3\" }", "\"1050kg/m^3\", model = \"j2\", y0 = \"1MPa\" }\n[solver]\nkind = \"static\"",
+       "bad.toml:12: bodies.column.material.model"},  // the body's location
   }));
   std::string text = tiny_scene;
   text.replace(text.find(from), from.size(), to);
