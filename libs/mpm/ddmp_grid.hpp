@@ -74,20 +74,27 @@ inline int table_index(const Bucket& b, int i, int j, int k) {
          (floor_div(k, bw) - first_table_block(b.coord[2]));
 }
 
-// `Components` values of the nodes at local coordinates −1 … 4 around a block (index
-// local + 1): value c of node n of block b is get(b, n)[c]; zero in inactive blocks.
-template <int Components>
-struct NodeHalo {
-  Real v[6][6][6][Components];
+// `Components` values of the nodes at local coordinates −Reach … bw − 1 + Reach around a
+// block (index local + Reach): value c of node n of block b is get(b, n)[c]; zero in
+// inactive blocks. The smoothing passes read one node around (Reach 1), the small-mass
+// passes two (ddmp_grid_detail::reach).
+template <int Reach, int Components>
+struct BlockHalo {
+  static constexpr int width = bw + 2 * Reach;
+  Real v[width][width][width][Components];
+  const Real* at(int li, int lj, int lk) const { return v[li + Reach][lj + Reach][lk + Reach]; }
 };
-template <int Components, class Get>
-void load_nodes(const DdmpNodalValues& nv, size_t block, Get get, NodeHalo<Components>& halo) {
-  for (int i = -1; i <= bw; ++i)
-    for (int j = -1; j <= bw; ++j)
-      for (int k = -1; k <= bw; ++k) {
+template <int Components>
+using NodeHalo = BlockHalo<1, Components>;
+
+template <int Reach, int Components, class Get>
+void load_halo(const DdmpNodalValues& nv, size_t block, Get get, BlockHalo<Reach, Components>& halo) {
+  for (int i = -Reach; i < bw + Reach; ++i)
+    for (int j = -Reach; j < bw + Reach; ++j)
+      for (int k = -Reach; k < bw + Reach; ++k) {
         const int di = floor_div(i, bw), dj = floor_div(j, bw), dk = floor_div(k, bw);
         const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
-        Real* out = halo.v[i + 1][j + 1][k + 1];
+        Real* out = halo.v[i + Reach][j + Reach][k + Reach];
         if (nb < 0) {
           for (int c = 0; c < Components; ++c) out[c] = 0;
           continue;
@@ -149,7 +156,7 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<6> s;
-    load_nodes<6>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, s);
+    load_halo<1, 6>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, s);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
@@ -177,7 +184,7 @@ inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_la
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<3> v;
-    load_nodes<3>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + velocity_lane; }, v);
+    load_halo<1, 3>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + velocity_lane; }, v);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
@@ -210,29 +217,8 @@ inline Real* coefficients_of(DdmpNodalValues& nv, size_t b, int n) {
   return nv.coefficients.data() + (b * SparseGrid::nodes_per_block + size_t(n)) * 4;
 }
 
-// `Components` values of the nodes at local coordinates −2 … 5 around a block (index
-// local + 2), value c of node n of block b from get(b, n)[c]; zero in inactive blocks.
 template <int Components>
-struct WideHalo {
-  Real v[wide][wide][wide][Components];
-  const Real* at(int li, int lj, int lk) const { return v[li + reach][lj + reach][lk + reach]; }
-};
-template <int Components, class Get>
-void load_wide(const DdmpNodalValues& nv, size_t block, Get get, WideHalo<Components>& halo) {
-  for (int i = -reach; i < bw + reach; ++i)
-    for (int j = -reach; j < bw + reach; ++j)
-      for (int k = -reach; k < bw + reach; ++k) {
-        const int di = floor_div(i, bw), dj = floor_div(j, bw), dk = floor_div(k, bw);
-        const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
-        Real* out = halo.v[i + reach][j + reach][k + reach];
-        if (nb < 0) {
-          for (int c = 0; c < Components; ++c) out[c] = 0;
-          continue;
-        }
-        const Real* in = get(size_t(nb), ((i - bw * di) * bw + (j - bw * dj)) * bw + (k - bw * dk));
-        for (int c = 0; c < Components; ++c) out[c] = in[c];
-      }
-}
+using WideHalo = BlockHalo<reach, Components>;
 
 // Whether block b or one of its neighbours holds a node that hands on (most blocks: none).
 inline bool near_small_mass(const DdmpNodalValues& nv, size_t b) {
@@ -291,7 +277,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
       any |= block[n * lane::count + lane::mass] < small_mass && block[n * lane::count + lane::constraint] == 0;
     if (!any) return;
     WideHalo<1> mass;
-    load_wide<1>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + lane::mass; }, mass);
+    load_halo<reach, 1>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + lane::mass; }, mass);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
@@ -348,9 +334,9 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int fi
     if (!near_small_mass(nv, b)) return;
     // Per neighbour: its up to 7 staged lanes and 4 coefficients (zero: not a source).
     WideHalo<7> source;
-    load_wide<7>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, source);
+    load_halo<reach, 7>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, source);
     WideHalo<4> coefficients;
-    load_wide<4>(nv, b, [&](size_t nb, int n) { return nv.coefficients.data() + (nb * SparseGrid::nodes_per_block + size_t(n)) * 4; },
+    load_halo<reach, 4>(nv, b, [&](size_t nb, int n) { return coefficients_of(nv, nb, n); },
                  coefficients);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
@@ -376,7 +362,7 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int 
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (!nv.block_has_small[b]) return;
     WideHalo<lane::count> lanes;
-    load_wide<lane::count>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count; }, lanes);
+    load_halo<reach, lane::count>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count; }, lanes);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {

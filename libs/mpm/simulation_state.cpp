@@ -136,9 +136,9 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
 
   const CheckpointReader boundaries_in = in.sub("boundaries");
   std::vector<Boundary> boundaries = boundaries_;
-  for (auto& b : boundaries) {
-    const CheckpointReader own = boundaries_in.sub(checkpoint_name(b));
-    std::visit([&](auto& boundary) { boundary.load(own); }, b);
+  for (auto& boundary_slot : boundaries) {
+    const CheckpointReader own = boundaries_in.sub(checkpoint_name(boundary_slot));
+    std::visit([&](auto& boundary) { boundary.load(own); }, boundary_slot);
   }
 
   particles_ = std::move(p);
