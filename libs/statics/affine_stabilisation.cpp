@@ -8,7 +8,7 @@ std::vector<Real> affine_stabilisation_blocks(const BandMatrix& matrix, const Na
                                               const std::vector<Real>& coefficient) {
   using Vec4 = Eigen::Matrix<Real, 4, 1>;
   using Mat4 = Eigen::Matrix<Real, 4, 4>;
-  // Point p's stencil matrix M = Cᵀ W C with W = diag(S_kp) and C_kj = δ_kj − ψ_k·φ_j,
+  // Point p's stencil matrix M = Cᵀ W C with W = I/n_p and C_kj = δ_kj − ψ_k·φ_j,
   // φ_j = (S_jp, ∇S_jp), ψ_k = (1, X_k − X_p): r = C u is the departure from the affine field.
   //   M_ij = w_i δ_ij − w_j ψ_j·φ_i − w_i ψ_i·φ_j + φ_iᵀ Q φ_j,   Q = Σ_k w_k ψ_k ψ_kᵀ.
   // Positions are taken relative to the row's own node (grid offsets × h) against round-off.
@@ -36,12 +36,12 @@ std::vector<Real> affine_stabilisation_blocks(const BandMatrix& matrix, const Na
       const Vec4 s = psi(e);
       Q += w * s * s.transpose();
     }
-    const Real c = coefficient[p], wi = w;
+    const Real c = coefficient[p];
     const Vec4 phi_i = phi(own), psi_i = psi(own), Q_phi_i = Q * phi_i;
     for (uint32_t e = first; e < last; ++e) {
       const Vec4 phi_j = phi(e);
-      Real m = -w * psi(e).dot(phi_i) - wi * psi_i.dot(phi_j) + Q_phi_i.dot(phi_j);
-      if (e == own) m += wi;
+      Real m = -w * psi(e).dot(phi_i) - w * psi_i.dot(phi_j) + Q_phi_i.dot(phi_j);
+      if (e == own) m += w;
       row[e - first] = c * m;
     }
   });

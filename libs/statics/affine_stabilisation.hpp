@@ -6,8 +6,10 @@
 //
 // The added energy penalises, per point, how far its stencil's nodal displacements are
 // from the affine field the point carries (u(X_p) and F_p, APIC's view of a point):
-//   E_s = Σ_p c_p/2 Σ_k S_kp |u_k − u(X_p) − (F_p − I)(X_k − X_p)|²,  c_p = β μ_p V_p / h²
-// with u(X_p) = Σ_j S_jp u_j. It vanishes for every nodal field that is affine on the
+//   E_s = Σ_p c_p/2 (1/n_p) Σ_k |u_k − u(X_p) − (F_p − I)(X_k − X_p)|²,  c_p = β μ_p V_p / h²
+// over the n_p nodes k of p's stencil, with u(X_p) = Σ_j S_jp u_j. The nodes are weighted
+// alike, not by S_kp: the zero-energy modes live on the far nodes of small weight, which
+// S_kp weights left nearly free (docs/statics.md). It vanishes for every nodal field that is affine on the
 // stencil — rigid motions and uniform strains included, so the patch test and rigid-body
 // invariance hold exactly — and is quadratic in u with one constant, positive semidefinite
 // Hessian (the same on each displacement component). A field that is affine on every

@@ -35,12 +35,14 @@ Scene parse(const std::string& text) {
 TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static one", "[scene]") {
   CHECK(parse(scene_with("")).solver.kind == SolverSpec::explicit_dynamics);
   const Scene s = parse(scene_with("kind = \"static\"\nincrements = 8\nlinear_solver = \"ldlt\"\n"
-                                   "tolerance = 1e-9\ncheck_stability = false"));
+                                   "tolerance = 1e-9\ncheck_stability = false\nstabilisation = 0.05"));
   CHECK(s.solver.kind == SolverSpec::static_equilibrium);
   CHECK(s.solver.increments == 8);
   CHECK(s.solver.linear_solver == "ldlt");
   CHECK(s.solver.tolerance == 1e-9);
   CHECK_FALSE(s.solver.check_stability);
+  CHECK(s.solver.stabilisation == 0.05);
+  CHECK(parse(scene_with("kind = \"static\"")).solver.stabilisation == 0.1);  // the default
 }
 
 TEST_CASE("Static solver errors name the line and the key", "[scene]") {
@@ -58,5 +60,7 @@ TEST_CASE("Static solver errors name the line and the key", "[scene]") {
              Catch::Contains("scene.toml:15") && Catch::Contains("increments"));
   CHECK_THAT(message(scene_with("kind = \"static\"\nlinear_solver = \"qr\"")),
              Catch::Contains("linear_solver") && Catch::Contains("cholmod"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nstabilisation = -0.1")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("stabilisation"));
   CHECK_THAT(message(scene_with("kind = \"quasi\"")), Catch::Contains("kind"));
 }
