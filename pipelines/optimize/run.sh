@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Runs the paper C examples with latmpm-optimize and writes summary.md (pipelines/optimize.mk).
+# usage: run.sh BIN_DIR OUT_DIR quick|paper
+set -euo pipefail
+bin=$1 out=$2 mode=$3
+src=$(cd "$(dirname "$0")/../.." && pwd)
+mkdir -p "$out"
+run() {  # name scene [--set ...]
+  local name=$1 scene=$2
+  shift 2
+  echo "optimize: $name"
+  "$bin/latmpm-optimize" "$src/data/optimize/$scene" "$@" -o "$out/$name" --quiet --threads 2
+  if command -v gnuplot >/dev/null; then
+    for gp in "$out/$name"/*-design.gp; do (cd "$out/$name" && gnuplot "$(basename "$gp")"); done
+  fi
+}
+if [ "$mode" = quick ]; then
+  run beam-2d cantilever-2d.toml --set 'domain.size=["30mm","10mm","1mm"]' \
+    --set 'loads.tip.min=["29mm","-1mm","-1mm"]' --set 'loads.tip.max=["31mm","1mm","2mm"]' \
+    --set optimize.max_iterations=60 --set leto.band_ramp=30 --set simp.beta_every=12
+  run beam-3d beam-3d.toml --set 'domain.size=["12mm","4mm","3mm"]' \
+    --set 'loads.edge.min=["11mm","-1mm","-1mm"]' --set 'loads.edge.max=["13mm","1mm","100mm"]' \
+    --set optimize.max_iterations=60 --set leto.band_ramp=30 --set simp.beta_every=12
+  examples="beam-2d beam-3d"
+else
+  run beam-2d cantilever-2d.toml
+  run michell-2d michell-2d.toml
+  run distributed-2d distributed-2d.toml
+  run distributed-2d-no-band distributed-2d.toml --set optimize.methods=leto --set leto.narrow_band=false
+  run beam-3d beam-3d.toml
+  examples="beam-2d michell-2d distributed-2d distributed-2d-no-band beam-3d"
+fi
+python3 "$src/pipelines/optimize/summary.py" "$out" $examples > "$out/summary.md.tmp"
+mv "$out/summary.md.tmp" "$out/summary.md"
+echo "optimize: results in $out/summary.md"
