@@ -30,6 +30,7 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstdint>
@@ -87,20 +88,31 @@ struct BlockHalo {
 template <int Components>
 using NodeHalo = BlockHalo<1, Components>;
 
+// Per axis, the halo splits into three segments: `Reach` nodes of the block below, the
+// block's own `bw`, `Reach` of the block above; the halo is copied segment box by segment
+// box (27 boxes, runs along k), with no per-node block lookup.
 template <int Reach, int Components, class Get>
 void load_halo(const DdmpNodalValues& nv, size_t block, Get get, BlockHalo<Reach, Components>& halo) {
-  for (int i = -Reach; i < bw + Reach; ++i)
-    for (int j = -Reach; j < bw + Reach; ++j)
-      for (int k = -Reach; k < bw + Reach; ++k) {
-        const int di = floor_div(i, bw), dj = floor_div(j, bw), dk = floor_div(k, bw);
+  static_assert(Reach <= bw, "a halo reaches at most one block away");
+  constexpr int first[3] = {bw - Reach, 0, 0};  // first local index in the neighbour, per segment
+  constexpr int count[3] = {Reach, bw, Reach};
+  constexpr int start[3] = {0, Reach, Reach + bw};  // first halo index, per segment
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int dk = -1; dk <= 1; ++dk) {
         const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
-        Real* out = halo.v[i + Reach][j + Reach][k + Reach];
-        if (nb < 0) {
-          for (int c = 0; c < Components; ++c) out[c] = 0;
-          continue;
-        }
-        const Real* in = get(size_t(nb), ((i - bw * di) * bw + (j - bw * dj)) * bw + (k - bw * dk));
-        for (int c = 0; c < Components; ++c) out[c] = in[c];
+        const int si = di + 1, sj = dj + 1, sk = dk + 1;
+        for (int i = 0; i < count[si]; ++i)
+          for (int j = 0; j < count[sj]; ++j)
+            for (int k = 0; k < count[sk]; ++k) {
+              Real* out = halo.v[start[si] + i][start[sj] + j][start[sk] + k];
+              if (nb < 0) {
+                for (int c = 0; c < Components; ++c) out[c] = 0;
+                continue;
+              }
+              const Real* in = get(size_t(nb), ((first[si] + i) * bw + (first[sj] + j)) * bw + (first[sk] + k));
+              for (int c = 0; c < Components; ++c) out[c] = in[c];
+            }
       }
 }
 
@@ -226,6 +238,11 @@ inline bool near_small_mass(const DdmpNodalValues& nv, size_t b) {
     if (nb >= 0 && nv.block_has_small[size_t(nb)]) return true;
   return false;
 }
+// w(d) = 2^(−|d|₁) of an offset d within reach.
+inline Real offset_weight(int x, int y, int z) {
+  static constexpr Real w[3 * reach + 1] = {1, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625};
+  return w[std::abs(x) + std::abs(y) + std::abs(z)];
+}
 // The 124 offsets d ≠ 0 within two cells per axis: a node one cell outside a flat face sees
 // two layers of the material along the normal (a linear fit), and every node next to a
 // particle's cell sees sizeable nodes even where a particle has just entered a new cell.
@@ -242,7 +259,7 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
       for (int y = -reach; y <= reach; ++y)
         for (int z = -reach; z <= reach; ++z) {
           const int l1 = std::abs(x) + std::abs(y) + std::abs(z);
-          if (l1 > 0) out[n++] = {x, y, z, Real(1) / Real(1 << l1)};
+          if (l1 > 0) out[n++] = {x, y, z, offset_weight(x, y, z)};
         }
     return out;
   }();
@@ -332,24 +349,30 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int fi
   });
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // receivers pull their part
     if (!near_small_mass(nv, b)) return;
-    // Per neighbour: its up to 7 staged lanes and 4 coefficients (zero: not a source).
+    // The sources within reach of this block (halo order: the same order for every
+    // receiver, so the sums do not depend on threads), then each source's part to the
+    // block's sizeable nodes within two cells of it.
+    WideHalo<4> coefficients;
+    load_halo<reach, 4>(nv, b, [&](size_t nb, int n) { return coefficients_of(nv, nb, n); }, coefficients);
     WideHalo<7> source;
     load_halo<reach, 7>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, source);
-    WideHalo<4> coefficients;
-    load_halo<reach, 4>(nv, b, [&](size_t nb, int n) { return coefficients_of(nv, nb, n); },
-                 coefficients);
-    for (int i = 0; i < bw; ++i)
-      for (int j = 0; j < bw; ++j)
-        for (int k = 0; k < bw; ++k) {
-          Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
-          if (!(node[lane::mass] >= small_mass)) continue;
-          for_each_offset([&](int x, int y, int z, Real w) {  // source l = i + (x, y, z): d = i − l = −(x, y, z)
-            const Real* c = coefficients.at(i + x, j + y, k + z);
-            if (c[0] == 0) return;
-            const Real C = distribution_coefficient(c, -x, -y, -z, w);
-            const Real* staged = source.at(i + x, j + y, k + z);
-            for (int q = 0; q < count; ++q) node[first + q] += C * staged[q];
-          });
+    Real* block = grid.block(b);
+    for (int si = -reach; si < bw + reach; ++si)
+      for (int sj = -reach; sj < bw + reach; ++sj)
+        for (int sk = -reach; sk < bw + reach; ++sk) {
+          const Real* c = coefficients.at(si, sj, sk);
+          if (c[0] == 0) continue;
+          const Real* staged = source.at(si, sj, sk);
+          for (int i = std::max(0, si - reach); i <= std::min(bw - 1, si + reach); ++i)
+            for (int j = std::max(0, sj - reach); j <= std::min(bw - 1, sj + reach); ++j)
+              for (int k = std::max(0, sk - reach); k <= std::min(bw - 1, sk + reach); ++k) {
+                const int x = i - si, y = j - sj, z = k - sk;  // d = i − l
+                if (x == 0 && y == 0 && z == 0) continue;
+                Real* node = block + SparseGrid::node_offset(i, j, k);
+                if (!(node[lane::mass] >= small_mass)) continue;
+                const Real C = distribution_coefficient(c, x, y, z, offset_weight(x, y, z));
+                for (int q = 0; q < count; ++q) node[first + q] += C * staged[q];
+              }
         }
   });
 }
