@@ -6,6 +6,7 @@
 
 #include <map>
 
+#include "mpm/cpdi_particles.hpp"
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/simulation_impl.hpp"
@@ -124,6 +125,9 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
       if (!(std::abs(particles_.position[p][a] / settings_.cell_size) < max_cell_coord))
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
+
+  if (settings_.shape_function == ShapeFunctionKind::cpdi1)
+    set_cpdi_domains(particles_, points, bodies_, settings_.cell_size, where);
 
   diagnostics_.body_displacement.assign(bodies_.size(), Vec3::Zero());
   diagnostics_.reaction.assign(bodies_.size(), Vec3::Zero());
@@ -284,11 +288,12 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.gravity_work += dt * im.sums.gravity_power;
   d.kinetic_energy = im.sums.kinetic;
   d.strain_energy = im.sums.strain;
+  d.plastic_dissipation = im.sums.dissipation;
   d.record_force = im.sums.record_volume > 0 ? record_area_ * im.sums.record_stress_volume / im.sums.record_volume : 0;
   d.max_speed = std::sqrt(im.sums.max_speed_sq);
 
   im.max_speed = std::max(d.max_speed, ledger.max_speed);
-  d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - im.initial_energy - initial_rigid_energy_ -
+  d.energy_error = d.kinetic_energy + d.strain_energy + d.plastic_dissipation + d.rigid_energy - im.initial_energy - initial_rigid_energy_ -
                    d.constraint_work - d.gravity_work - driven_rigid_work_;
   if (im.sums.max_wave_speed_sq > 0) im.max_wave_speed = std::sqrt(im.sums.max_wave_speed_sq);
 

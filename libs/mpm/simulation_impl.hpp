@@ -332,12 +332,14 @@ struct Simulation::Impl {
 
   // The contact forces at the start of the step (positions x^n, bodies at X^n) into the
   // force lanes, f_i += S_ip f_p, point by point in order (deterministic). DDMP's weights
-  // are the linear ones (shape_ddmp.hpp), so those points take the linear stencil.
+  // are the linear ones (shape_ddmp.hpp), so those points take the linear stencil; so do
+  // CPDI1 points, whose contact paper B handles at the material point (Sec. 3.4).
   template <class Shape>
   void add_contact_forces() {
     if (!penalty_contact) return;
     update_penalty_contacts(particles(), contact_materials, sim.rigid_bodies_, sim.diagnostics_.rigid, contact);
-    using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
+    using Weights =
+        std::conditional_t<has_smoothed_gradient<Shape>::value || uses_domain_vertices<Shape>::value, LinearShape, Shape>;
     constexpr int N = Weights::nodes_per_axis;
     const Real h = settings().cell_size;
     for (uint32_t p : contact.touching) {
@@ -358,7 +360,7 @@ struct Simulation::Impl {
   // --- Sums, diagnostics and checks ------------------------------------------------------
 
   struct PassSums {
-    Real kinetic = 0, strain = 0, gravity_power = 0, record_stress_volume = 0, record_volume = 0;
+    Real kinetic = 0, strain = 0, dissipation = 0, gravity_power = 0, record_stress_volume = 0, record_volume = 0;
     Real max_speed_sq = 0, max_wave_speed_sq = 0;
   } sums;
 
@@ -369,6 +371,7 @@ struct Simulation::Impl {
       if (t.fault != ParticleFault::none) throw_fault(t.fault, t.fault_particle);
       s.kinetic += t.kinetic;
       s.strain += t.strain;
+      s.dissipation += t.dissipation;
       s.gravity_power += t.gravity_power;
       s.record_stress_volume += t.record_stress_volume;
       s.record_volume += t.record_volume;
@@ -385,6 +388,7 @@ struct Simulation::Impl {
     }
     if (gradient) {
       sums.strain = domain.reduce_sum(s.strain);
+      sums.dissipation = domain.reduce_sum(s.dissipation);
       sums.record_stress_volume = domain.reduce_sum(s.record_stress_volume);
       sums.record_volume = domain.reduce_sum(s.record_volume);
       sums.max_wave_speed_sq = domain.reduce_max(s.max_wave_speed_sq);

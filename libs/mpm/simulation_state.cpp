@@ -23,6 +23,7 @@ void for_each_solver_scalar(D& d, Im& im, R& initial_rigid_energy, R& driven_rig
   visit("record_force", d.record_force);
   visit("kinetic_energy", d.kinetic_energy);
   visit("strain_energy", d.strain_energy);
+  visit("plastic_dissipation", d.plastic_dissipation);
   visit("external_work", d.external_work);
   visit("max_speed", d.max_speed);
   visit("constraint_work", d.constraint_work);

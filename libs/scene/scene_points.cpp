@@ -13,6 +13,12 @@ void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& bod
   all.position.insert(all.position.end(), part.position.begin(), part.position.end());
   all.volume.insert(all.volume.end(), part.volume.begin(), part.volume.end());
   all.half_size.insert(all.half_size.end(), part.half_size.begin(), part.half_size.end());
+  // CPDI1 domains survive the merge only while every file has them (a cpdi1 run needs them
+  // for every point and says so when they are missing).
+  if (all.domain_vertices.size() == before && part.domain_vertices.size() == n)
+    all.domain_vertices.insert(all.domain_vertices.end(), part.domain_vertices.begin(), part.domain_vertices.end());
+  else
+    all.domain_vertices.clear();
   for (int32_t b : part.body) all.body.push_back(body_map[b]);
   for (auto& [name, mask] : all.tags) mask.resize(before + n, 0);
   for (const auto& [name, mask] : part.tags) {
