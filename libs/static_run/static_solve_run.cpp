@@ -136,6 +136,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   };
   statics::SparseSolver solver(solver_kind);
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
+  log.line("linear solver: " + solver.describe());
   series.save();
 
   StaticSolveSummary s;

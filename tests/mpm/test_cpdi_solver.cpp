@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "mpm/simulation.hpp"
+#include "mpm/simulation_test_access.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -78,17 +79,17 @@ TEST_CASE("CPDI1 particles in the solver conserve mass and reproduce a linear ve
   auto field = [&](const Vec3& x) { return Vec3(A * x + b); };
   const Real dt = 4e-5;  // 25 steps: stretches and shears of ~10–30 %
   for (int step = 0; step <= 25; ++step) {
-    sim.stage_particles_to_grid();
+    SimulationTestAccess::particles_to_grid(sim);
     Real mass = 0;
     for (size_t p = 0; p < sim.particles().size(); ++p) mass += sim.particles().mass[p];
-    REQUIRE(sim.grid_totals().mass == Approx(mass).epsilon(1e-13));
-    sim.stage_set_grid_velocity(field);
-    const Simulation::Gathered g = sim.gather_from_grid();
+    REQUIRE(SimulationTestAccess::grid_totals(sim).mass == Approx(mass).epsilon(1e-13));
+    SimulationTestAccess::set_grid_velocity(sim, field);
+    const SimulationTestAccess::Gathered g = SimulationTestAccess::gather_from_grid(sim);
     for (size_t p = 0; p < sim.particles().size(); ++p) {
       REQUIRE((g.velocity[p] - field(sim.particles().position[p])).norm() < 1e-12);
       REQUIRE((g.velocity_gradient[p] - A).norm() < 1e-9 * A.norm());
     }
-    sim.stage_grid_to_particles(dt);
+    SimulationTestAccess::grid_to_particles(sim, dt);
   }
   // The domains did deform: F = exp-like product, far from I.
   CHECK((sim.particles().deformation[0] - Mat3::Identity()).norm() > 0.1);
@@ -112,9 +113,9 @@ TEST_CASE("A CPDI1 bar rotated by 90 degrees and back follows the solver's rigid
   std::vector<uint32_t> id0 = sim.particles().id;
   auto turn = [&](const Mat3& w) {
     for (int step = 0; step < n; ++step) {
-      sim.stage_particles_to_grid();
-      sim.stage_set_grid_velocity([&](const Vec3& x) { return Vec3(w * x); });
-      sim.stage_grid_to_particles(dt);
+      SimulationTestAccess::particles_to_grid(sim);
+      SimulationTestAccess::set_grid_velocity(sim, [&](const Vec3& x) { return Vec3(w * x); });
+      SimulationTestAccess::grid_to_particles(sim, dt);
     }
   };
   turn(W);
@@ -187,5 +188,5 @@ TEST_CASE("CPDI1 refuses point sets without domains and domains wider than its s
   PointSet coarse = empty_point_set(h, 1);
   add_hex_points(coarse, Vec3::Zero(), Eigen::Vector3i(2, 2, 2), 1e-3, 0, "block");
   Simulation sim(coarse, {deformable("block", elastic(1e9, 0.3, 2000))}, cpdi_settings(h));
-  CHECK_THROWS_AS(sim.stage_particles_to_grid(), NumericalError);
+  CHECK_THROWS_AS(SimulationTestAccess::particles_to_grid(sim), NumericalError);
 }
