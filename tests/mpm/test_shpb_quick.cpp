@@ -38,10 +38,7 @@ RigidBodySettings plane(const std::string& name, Real z, Real normal_z, Real vel
 TEST_CASE("The QUICK SHPB specimen in CPDI1 and J2 closes its energy balance with the plastic work", "[mpm][cpdi][shpb]") {
   const PointSet points = hex_mesh_points(cylinder_hex_mesh(paper_b_cylinder(2, diameter, length)), "specimen", h);
   REQUIRE(points.size() == 384);
-  const J2Parameters j2 = steel_42crmo4_400c();
-  MaterialParameters m = elastic(j2.young_modulus, j2.poisson_ratio, 7850, MaterialKind::j2);
-  m.initial_yield = j2.initial_yield, m.saturation_yield = j2.saturation_yield;
-  m.saturation_rate = j2.saturation_rate, m.linear_hardening = j2.linear_hardening;
+  const MaterialParameters m = j2_material(steel_42crmo4_400c(), 7850);
   Settings s;
   s.cell_size = h;
   s.shape_function = ShapeFunctionKind::cpdi1;
