@@ -70,12 +70,12 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   SparseSolver solver(LinearSolverKind::cholmod);
   // Linear elasticity: one Newton step solves it; the projected Newton's diagonal shift
   // (docs/statics.md) holds a part the band leaves unsupported, whose residual then stays
-  // at the shift's level: accepted up to 1e-5 (its huge compliance steers the optimiser
+  // at the shift's level: accepted up to 1e-4 (its huge compliance steers the optimiser
   // back), anything worse is a failure.
   NewtonOptions options;
   options.max_iterations = 10;  // iterative refinement where E_min = 1e-9 E makes K ill-conditioned
   const NewtonReport report = solve_equilibrium(problem, dirichlet, u, solver, options);
-  if (!report.converged && !(report.iterations > 0 && report.residual.back() <= 1e-5))
+  if (!report.converged && !(report.iterations > 0 && report.residual.back() <= 1e-4))
     throw NumericalError("compliance: static solve failed: " + report.failure);
 
   ComplianceResult r;

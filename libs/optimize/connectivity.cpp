@@ -50,7 +50,9 @@ int label_components(const DesignGrid& grid, const std::vector<Real>& density, R
 }  // namespace
 
 std::vector<char> narrow_band_mask(const DesignGrid& grid, const std::vector<Real>& density, Real threshold,
-                                   const std::vector<size_t>& keep, const std::vector<size_t>& anchors) {
+                                   const std::vector<size_t>& keep, const std::vector<size_t>& anchors,
+                                   bool* joined) {
+  if (joined) *joined = false;
   std::vector<int> label;
   std::vector<size_t> size;
   label_components(grid, density, threshold, label, size);
@@ -63,9 +65,11 @@ std::vector<char> narrow_band_mask(const DesignGrid& grid, const std::vector<Rea
     for (size_t q : keep)
       if (label[q] >= 0) loaded[size_t(label[q])] = 1;
     int largest = -1;
-    for (int pass = 0; pass < 2 && largest < 0; ++pass)
+    for (int pass = 0; pass < 2 && largest < 0; ++pass) {
       for (size_t c = 0; c < size.size(); ++c)
         if (anchored[c] && (pass == 1 || loaded[c]) && (largest < 0 || size[c] > size[size_t(largest)])) largest = int(c);
+      if (pass == 0 && largest >= 0 && joined) *joined = true;
+    }
     if (largest < 0) largest = int(std::max_element(size.begin(), size.end()) - size.begin());
     for (size_t q = 0; q < mask.size(); ++q) mask[q] = label[q] == largest;
   }

@@ -17,8 +17,10 @@ namespace latmpm::optimize {
 // With `anchors` (points next to a support), the largest component holding an anchor and a
 // kept point is taken, else the largest holding an anchor, else the largest: a larger
 // free-floating piece would make the static solve singular.
+// `joined` (optional) tells whether the chosen component holds an anchor and a kept point.
 std::vector<char> narrow_band_mask(const DesignGrid& grid, const std::vector<Real>& density, Real threshold,
-                                   const std::vector<size_t>& keep = {}, const std::vector<size_t>& anchors = {});
+                                   const std::vector<size_t>& keep = {}, const std::vector<size_t>& anchors = {},
+                                   bool* joined = nullptr);
 
 // Number of connected components of {ρ_q > threshold}.
 size_t component_count(const DesignGrid& grid, const std::vector<Real>& density, Real threshold);

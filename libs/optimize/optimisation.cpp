@@ -26,14 +26,18 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
   const size_t n = grid.point_count();
   std::vector<size_t> keep;  // loaded points stay simulated
   for (const auto& points : loaded_points(grid, load_case)) keep.insert(keep.end(), points.begin(), points.end());
-  // Anchors: points in a cell with a held node (a component without one floats).
+  // Anchors: points in a cell with a node held in every direction (a component without one
+  // floats; a symmetry plane holds only its normal).
+  std::vector<const Support*> clamps;
+  for (const Support& s : load_case.supports)
+    if (s.held[0] && s.held[1] && (s.held[2] || grid.planar)) clamps.push_back(&s);
   std::vector<size_t> anchors;
   for (size_t q = 0; q < n; ++q) {
     const Index3 c = grid.cell_of(q);
     bool held = false;
     for (int corner = 0; corner < 8 && !held; ++corner) {
       const Vec3 node = grid.cell_size * Vec3(c[0] + (corner & 1), c[1] + ((corner >> 1) & 1), c[2] + ((corner >> 2) & 1));
-      for (const Support& s : load_case.supports) held = held || s.box.contains(node);
+      for (const Support* s : clamps) held = held || s->box.contains(node);
     }
     if (held) anchors.push_back(q);
   }
@@ -47,15 +51,26 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     const auto t0 = std::chrono::steady_clock::now();
     design.start_iteration(k);
     design.densities(x, rho);
-    const Real threshold = settings.band.enabled ? settings.band.threshold(k) : 0;
-    std::vector<char> mask = settings.band.enabled ? narrow_band_mask(grid, rho, threshold, keep, anchors)
-                                                   : std::vector<char>(n, 1);
+    for (size_t q : keep) rho[q] = 1;  // loaded points: solid, not designed
+    Real threshold = settings.band.enabled ? settings.band.threshold(k) : 0;
+    std::vector<char> mask(n, 1);
+    if (settings.band.enabled) {
+      // Where the threshold would cut every path from the loads to the supports, it is
+      // lowered for this iteration (by 0.05 at a time, not below the schedule's start).
+      bool joined = false;
+      for (;;) {
+        mask = narrow_band_mask(grid, rho, threshold, keep, anchors, &joined);
+        if (joined || threshold <= settings.band.start) break;
+        threshold = std::max(settings.band.start, threshold - 0.05);
+      }
+    }
     std::vector<Real> masked(n);
     for (size_t q = 0; q < n; ++q) masked[q] = mask[q] ? rho[q] : 0;
-    const ComplianceResult c = evaluate_compliance(grid, masked, mask, load_case, material);
+    ComplianceResult c = evaluate_compliance(grid, masked, mask, load_case, material);
     const Real v = volume_fraction(grid, masked);
     std::vector<Real> d_volume(n);
     for (size_t q = 0; q < n; ++q) d_volume[q] = mask[q] ? grid.point_volume() / grid.domain_volume() : 0;
+    for (size_t q : keep) c.gradient[q] = d_volume[q] = 0;
 
     result.density = masked;
     result.active = mask;

@@ -14,6 +14,7 @@
 #include "core/file_transfer.hpp"
 #include "core/provenance.hpp"
 #include "core/tool_main.hpp"
+#include "optimize/design_export.hpp"
 #include "optimize/design_output.hpp"
 #include "optimize/design_study.hpp"
 #include "optimize/optimize_scene.hpp"
@@ -35,7 +36,10 @@ The output directory receives scene.toml (resolved), summary.toml (per method: i
 seconds per iteration, volume fraction and compliance of the binary design at the
 optimisation resolution and on a grid refined twice), and per method <method>-history.csv,
 <method>-design.csv (x, y, z in mm, density, binary per quadrature point) and
-<method>-design.gp (gnuplot draws <method>-design.png).
+<method>-design.gp (gnuplot draws <method>-design.png), and the binary design as
+<method>-points.h5 (a point-set file for latmpm-solve: solid quadrature points, a planar
+design extruded through its thickness) and <method>-part.stl (closed surface, mm: OpenVDB
+level set of the solid voxels, meshed by volumeToMesh).
 
 Exit status: 0 done, 1 usage, 2 bad scene (FILE:LINE: key: problem; nothing written),
 3 numerical failure, 5 an output could not be written.
@@ -88,10 +92,13 @@ int optimize_main(int argc, char** argv) {
     outcomes.push_back(run_method(scene, method, progress));
     const MethodOutcome& o = outcomes.back();
     write_method_files(dir, scene, o, lines);
+    const ExportReport exported = export_design(scene.grid, o.binary, dir + "/" + method + "-points.h5",
+                                                dir + "/" + method + "-part.stl", provenance);
     std::printf("%s: %s %zu iterations (%s), %.3f s/iteration, volume %.2f %%, compliance %.6g J, refined %.6g J, "
-                "%zu corrections\n",
+                "%zu corrections; %zu points, %zu triangles (%s, enclosed %.4g mm^3, points %.4g mm^3)\n",
                 cl.tool().c_str(), method.c_str(), o.result.history.size(), o.result.converged ? "converged" : "not converged",
-                o.seconds_per_iteration, 100 * o.volume_fraction, o.compliance_binary, o.compliance_refined, o.corrections);
+                o.seconds_per_iteration, 100 * o.volume_fraction, o.compliance_binary, o.compliance_refined, o.corrections, exported.points,
+                exported.triangles, exported.closed ? "closed" : "NOT closed", 1e9 * exported.surface_volume, 1e9 * exported.solid_volume);
   }
   write_summary(dir, scene, outcomes, lines);
   return exit_ok;
