@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/particles.hpp"  // CpdiParticleDomain
 #include "mpm/real.hpp"
 
 namespace latmpm {
@@ -17,7 +18,7 @@ class Hdf5File;
 namespace latmpm::mpm {
 
 // 1: positional scalars (before issue 13); 2: named datasets.
-inline constexpr int64_t checkpoint_format_version = 2;
+inline constexpr int64_t checkpoint_format_version = 3;  // 3: plastic_dissipation, cpdi_domain
 
 // How a value type is stored: its components per row and the dataset element type.
 template <class T>
@@ -30,6 +31,8 @@ template <>
 struct CheckpointCodec<Mat3> { static constexpr int components = 9; };
 template <>
 struct CheckpointCodec<SymTensor> { static constexpr int components = 6; };
+template <>
+struct CheckpointCodec<CpdiParticleDomain> { static constexpr int components = 56; };
 
 class CheckpointWriter {
  public:

@@ -29,6 +29,9 @@ struct StepDiagnostics {
 
   Real kinetic_energy = 0;  // ½ Σ m v² over deformable points, J
   Real strain_energy = 0;   // Σ V0 ψ over deformable points, J (linear elastic: ½ σ:ε V)
+  // Energy the materials dissipated since the start, J: Σ V0 × the plastic work per
+  // reference volume of J2 points (Paper B Eq. 13's Σ Δα y(α)); zero for elastic models.
+  Real plastic_dissipation = 0;
   // Work done on the deformable material by reactions of driven bodies and by gravity,
   // accumulated since the start, J. Energy balance: kinetic + strain ≈ initial + work
   // (minus what PIC damping and contact dissipate).
@@ -42,7 +45,7 @@ struct StepDiagnostics {
   // Energy accounting (docs/solver.md, "Energy"). constraint_work: ∫ Σ r · v dt of the
   // point-defined fixed and driven bodies (zero for a fixed base); gravity_work: gravity's
   // work on the deformable material; rigid_energy: Σ kinetic + potential energy of the free
-  // rigid bodies; energy_error: (kinetic + strain + rigid_energy) − their initial value −
+  // rigid bodies; energy_error: (kinetic + strain + plastic_dissipation + rigid_energy) − their initial value −
   // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact,
   // dissipation-free scheme; MPM's grid-to-particle projection and FLIP/PIC blending
   // dissipate a little, so it drifts negative.

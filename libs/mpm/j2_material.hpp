@@ -35,6 +35,8 @@ struct J2Plastic {
                                                            {"j2_be_xy", 0},
                                                            {"j2_alpha", 0},
                                                            {"j2_plastic_work", 0}}};
+  // j2_plastic_work: the energy balance's plastic dissipation (material_history.hpp).
+  static constexpr size_t dissipation_history = 7;
 
   static J2Plastic from(const MaterialParameters& m, Real mass_scaling) {
     return {j2_parameters(m), m.density * mass_scaling};

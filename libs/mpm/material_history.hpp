@@ -52,6 +52,22 @@ inline T material_energy_density(const Model& model, const Deformation<T>& d, co
     return model.strain_energy_density(d, s);
 }
 
+// Energy the model has dissipated per reference volume, J/m³: the history variable a
+// dissipative model names with `static constexpr size_t dissipation_history = k;` (J2's
+// accumulated plastic work), zero for the others. The energy balance counts V0 times it.
+template <class Model, class = void>
+struct has_dissipation_history : std::false_type {};
+template <class Model>
+struct has_dissipation_history<Model, std::void_t<decltype(Model::dissipation_history)>> : std::true_type {};
+
+template <class Model, class T>
+inline T material_dissipation_density(const Model&, const T* history) {
+  if constexpr (has_dissipation_history<Model>::value)
+    return history[Model::dissipation_history];
+  else
+    return T{};
+}
+
 // Adds a column for each of the model's history variables to ps (one column per name:
 // two bodies of one model share them) and returns their indices in Particles::history, in
 // the model's order. Call before Particles::resize; the columns are sized with the others.

@@ -29,13 +29,14 @@ Enum parse_name(const std::string& text, const std::array<std::pair<Enum, const 
   throw InputError(where, field, "unknown value '" + text + "' (expected one of: " + choices + ")");
 }
 
-constexpr std::array<std::pair<ShapeFunctionKind, const char*>, 6> shape_names{{
+constexpr std::array<std::pair<ShapeFunctionKind, const char*>, 7> shape_names{{
     {ShapeFunctionKind::linear, "linear"},
     {ShapeFunctionKind::ugimp, "ugimp"},
     {ShapeFunctionKind::cpgimp, "cpgimp"},
     {ShapeFunctionKind::bspline2, "bspline2"},
     {ShapeFunctionKind::bspline3, "bspline3"},
     {ShapeFunctionKind::ddmp, "ddmp"},
+    {ShapeFunctionKind::cpdi1, "cpdi1"},
 }};
 constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
     {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};

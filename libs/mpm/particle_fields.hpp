@@ -35,6 +35,7 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"flags"}, ps.flags, uint8_t(0));
   visit(ParticleField{"contact_body", true}, ps.contact_body, int32_t(-1));
   visit(ParticleField{"contact_anchor", true}, ps.contact_anchor, Vec3(Vec3::Zero()));
+  visit(ParticleField{"cpdi_domain", true}, ps.cpdi_domain, CpdiParticleDomain(CpdiParticleDomain::Zero()));
   for (auto& column : ps.history)
     visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
 }

@@ -18,6 +18,10 @@ struct HistoryColumn {
   std::vector<Real> values;
 };
 
+// A CPDI1 particle's reference domain (shape_cpdi.hpp), column α for vertex α: rows 0–2
+// the offset X_α − X_p (m), row 3 w_α = ∫Q_α dV / V0, rows 4–6 g_α = ∫Grad Q_α dV / V0 (1/m).
+using CpdiParticleDomain = Eigen::Matrix<Real, 7, 8>;
+
 // The arrays below are listed once more, in particle_fields.hpp: everything that handles
 // every field (resize, permute, checkpoint, memory) goes through that list.
 struct Particles {
@@ -37,6 +41,8 @@ struct Particles {
   // body's frame (m, x_A − the body's displacement).
   std::vector<int32_t> contact_body;
   std::vector<Vec3> contact_anchor;
+  // CPDI1 domains (shape_cpdi.hpp), empty unless the run's shape function is cpdi1.
+  std::vector<CpdiParticleDomain> cpdi_domain;
   // Material history, one column per variable the run's models declare (material_history.hpp).
   std::vector<HistoryColumn> history;
 

@@ -11,9 +11,10 @@ enum class ShapeFunctionKind {
   bspline2,   // quadratic B-spline (27 nodes)
   bspline3,   // cubic B-spline (64 nodes)
   ddmp,       // dual domain MPM: linear S, modified gradient ∇̄S (Paper A Eq. 7; 64 nodes)
+  cpdi1,      // CPDI1 over hexahedral domains convected with F (Paper B Eq. 7; 64 nodes)
 };
 
-// "linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp".
+// "linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp", "cpdi1".
 std::string to_string(ShapeFunctionKind kind);
 // Inverse of to_string; throws InputError(where, field, ...) for an unknown name.
 ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where = "",

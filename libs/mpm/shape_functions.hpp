@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "mpm/shape_bspline.hpp"
+#include "mpm/shape_cpdi.hpp"
 #include "mpm/shape_ddmp.hpp"
 #include "mpm/shape_function_kind.hpp"
 #include "mpm/shape_gimp.hpp"
@@ -22,6 +23,7 @@ decltype(auto) with_shape_function(ShapeFunctionKind kind, F&& f) {
     case ShapeFunctionKind::bspline2: return f(Bspline2Shape{});
     case ShapeFunctionKind::bspline3: return f(Bspline3Shape{});
     case ShapeFunctionKind::ddmp: return f(DdmpShape{});
+    case ShapeFunctionKind::cpdi1: return f(CpdiShape{});
   }
   return f(LinearShape{});
 }

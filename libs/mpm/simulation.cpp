@@ -6,6 +6,7 @@
 
 #include <map>
 
+#include "mpm/cpdi_particles.hpp"
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/step_stages.hpp"
@@ -124,6 +125,9 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
       if (!(std::abs(state_.particles.position[p][a] / settings_.cell_size) < max_cell_coord))
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
+
+  if (settings_.shape_function == ShapeFunctionKind::cpdi1)
+    set_cpdi_domains(state_.particles, points, bodies_, settings_.cell_size, where);
 
   state_.diagnostics.body_displacement.assign(bodies_.size(), Vec3::Zero());
   state_.diagnostics.reaction.assign(bodies_.size(), Vec3::Zero());
@@ -280,10 +284,11 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.gravity_work += dt * c.sums.gravity_power;
   d.kinetic_energy = c.sums.kinetic;
   d.strain_energy = c.sums.strain;
+  d.plastic_dissipation = c.sums.dissipation;
   d.max_speed = std::sqrt(c.sums.max_speed_sq);
 
   carried.max_speed = std::max(d.max_speed, ledger.max_speed);
-  d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - carried.initial_energy - state_.carried.initial_rigid_energy -
+  d.energy_error = d.kinetic_energy + d.strain_energy + d.plastic_dissipation + d.rigid_energy - carried.initial_energy - state_.carried.initial_rigid_energy -
                    d.constraint_work - d.gravity_work - state_.carried.driven_rigid_work;
   if (c.sums.max_wave_speed_sq > 0) carried.max_wave_speed = std::sqrt(c.sums.max_wave_speed_sq);
 

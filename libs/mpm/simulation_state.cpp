@@ -22,6 +22,7 @@ void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
   visit("stable_dt", d.stable_dt);
   visit("kinetic_energy", d.kinetic_energy);
   visit("strain_energy", d.strain_energy);
+  visit("plastic_dissipation", d.plastic_dissipation);
   visit("external_work", d.external_work);
   visit("max_speed", d.max_speed);
   visit("constraint_work", d.constraint_work);

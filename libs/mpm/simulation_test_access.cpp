@@ -102,9 +102,16 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
             for (int k = 0; k < N; ++k) {
               const Real* node = buffer.data.data() + buffer.offset(st.base[0] + i, st.base[1] + j, st.base[2] + k);
               const Vec3 vi(node[lane::momentum], node[lane::momentum + 1], node[lane::momentum + 2]);
-              const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
-              const Vec3 dw(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
-                            st.w[i][0] * st.w[j][1] * st.dw[k][2]);
+              Real w;
+              Vec3 dw;
+              if constexpr (uses_domain_vertices<Shape>::value) {  // CPDI1's dense box
+                const int e = CpdiBoxStencil::index(i, j, k);
+                w = st.w[e], dw = Vec3(st.g[0][e], st.g[1][e], st.g[2][e]);
+              } else {
+                w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+                dw = Vec3(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
+                          st.w[i][0] * st.w[j][1] * st.dw[k][2]);
+              }
               v += w * vi;
               grad += vi * dw.transpose();
             }

@@ -70,6 +70,7 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
     if (t.fault != ParticleFault::none) throw_fault(s, c, t.fault, t.fault_particle);
     local.kinetic += t.kinetic;
     local.strain += t.strain;
+    local.dissipation += t.dissipation;
     local.gravity_power += t.gravity_power;
     local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
     local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
@@ -85,6 +86,7 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
   }
   if (gradient) {
     sums.strain = c.domain.reduce_sum(local.strain);
+    sums.dissipation = c.domain.reduce_sum(local.dissipation);
     sums.max_wave_speed_sq = c.domain.reduce_max(local.max_wave_speed_sq);
   }
 }

@@ -42,7 +42,7 @@ using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
 
 // The particle passes' sums (after the domain's reductions).
 struct PassSums {
-  Real kinetic = 0, strain = 0, gravity_power = 0;
+  Real kinetic = 0, strain = 0, dissipation = 0, gravity_power = 0;
   Real max_speed_sq = 0, max_wave_speed_sq = 0;
 };
 
@@ -244,12 +244,14 @@ void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
 
 // The contact forces at the start of the step into the force lanes, f_i += S_ip f_p, point
 // by point in order (deterministic). DDMP's weights are the linear ones (shape_ddmp.hpp),
-// so those points take the linear stencil.
+// so those points take the linear stencil; so do CPDI1 points, whose contact paper B
+// handles at the material point (Sec. 3.4).
 template <class Shape>
 void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
-  using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
+  using Weights =
+      std::conditional_t<has_smoothed_gradient<Shape>::value || uses_domain_vertices<Shape>::value, LinearShape, Shape>;
   constexpr int N = Weights::nodes_per_axis;
   const Real h = c.settings.cell_size;
   for (uint32_t p : c.contact.touching) {

@@ -59,6 +59,7 @@ enum class ParticleFault { none, not_finite, inverted, left_grid };
 // Per-bucket sums of one gather pass (summed over buckets in order: deterministic).
 struct BucketTally {
   Real kinetic = 0, strain = 0, gravity_power = 0;
+  Real dissipation = 0;  // Σ V0 × dissipated energy density (material_history.hpp), J
   Real max_speed_sq = 0;  // m²/s²
   Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
@@ -94,7 +95,9 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
 // Gradient = false: the pass needs weights only (DDMP then skips its smoothed part).
 template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
-  if constexpr (has_grid_smoothed_gradient<Shape>::value)
+  if constexpr (uses_domain_vertices<Shape>::value)
+    return make_cpdi_box_stencil(ps, p, h);
+  else if constexpr (has_grid_smoothed_gradient<Shape>::value)
     return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha);
   else if constexpr (has_smoothed_gradient<Shape>::value)
     return make_ddmp_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, Gradient);
@@ -102,6 +105,28 @@ inline auto particle_stencil(const Particles& ps, size_t p, Real h, const Bucket
     return trim_zero_planes(make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h));
   else
     return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
+}
+
+// The lane vectors of particle p's scatter: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz, with
+// a = (m, m v) and f_i = −V σ ∇S_i, V = J V0 the current volume.
+struct ScatterLanes {
+  NodeLanes a, fx, fy, fz;
+};
+template <class Mode>
+[[gnu::always_inline]] inline ScatterLanes scatter_lanes(const Particles& ps, size_t p) {
+  NodeLanes a{}, fx{}, fy{}, fz{};
+  const Real m = ps.mass[p];
+  if constexpr (Mode::mass) a[lane::mass] = m;
+  if constexpr (Mode::momentum_lane >= 0)
+    for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
+  if constexpr (Mode::force) {
+    const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
+    const SymTensor& s = ps.stress[p];
+    fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
+    fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
+    fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
+  }
+  return {a, fx, fy, fz};
 }
 
 template <class Shape, class Mode>
@@ -122,6 +147,10 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
       for (uint32_t p = p0; p < p_end; ++p) {
         const auto& st = stencils[p - p0];
         Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+        if constexpr (uses_domain_vertices<Shape>::value) {  // deformable points only (cpdi_particles.hpp)
+          const auto [a, fx, fy, fz] = scatter_lanes<Mode>(ps, p);
+          scatter_cpdi<Mode::force, BucketBuffer::stride_i, BucketBuffer::stride_j>(st, first, a, fx, fy, fz);
+        } else {
         // Rigid points mark every node they touch with their body: those nodes take the body's
         // prescribed velocity (zero unless driven). Held points of a deformable body mark the
         // touched nodes except those lying inward (against hold_outward) by more than half
@@ -147,20 +176,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                 }
         }
         if (rigid) continue;  // rigid points carry no mass to the grid
-        // Lane vectors: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz.
-        NodeLanes a{}, fx{}, fy{}, fz{};
-        const Real m = ps.mass[p];
-        if constexpr (Mode::mass) a[lane::mass] = m;
-        if constexpr (Mode::momentum_lane >= 0)
-          for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
-        // f_i = −V σ ∇S_i with V = J V0 the current volume.
-        const Real v = Mode::force ? -ps.volume0[p] * ps.deformation[p].determinant() : Real(0);
-        const SymTensor& s = ps.stress[p];
-        if constexpr (Mode::force) {
-          fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
-          fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
-          fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
-        }
+        const auto [a, fx, fy, fz] = scatter_lanes<Mode>(ps, p);
         // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
         // (with_trip_count; a run-time bound there changed the rounding of the results).
         const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
@@ -185,7 +201,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
           }
         if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-          scatter_ddmp_corner_stress(st, v, s, buffer);
+          scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
         } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
           // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
           for (int i = 0; i < N; ++i)
@@ -196,6 +212,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                 store_lanes(node, load_lanes(node) + g[0] * fx + g[1] * fy + g[2] * fz);
               }
         }
+        }  // tensor-product stencils
       }
     }
   }
@@ -274,6 +291,27 @@ template <bool Gradient>
   return out;
 }
 
+// CPDI1 (shape_cpdi.hpp): the dense box, node by node.
+template <bool Gradient>
+[[gnu::always_inline]] inline Interpolation interpolate(const CpdiBoxStencil& st, const BucketBuffer& buffer) {
+  constexpr int n = CpdiBoxStencil::n;
+  const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
+  Interpolation out{};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const int e = CpdiBoxStencil::index(i, j, k);
+        const NodeLanes node = load_lanes(first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * lane::count);
+        out.aw += st.w[e] * node;
+        if constexpr (Gradient) {
+          out.ax += st.g[0][e] * node;
+          out.ay += st.g[1][e] * node;
+          out.az += st.g[2][e] * node;
+        }
+      }
+  return out;
+}
+
 // One particle's fault, kept if it is the bucket's first.
 inline void note_fault(BucketTally& t, ParticleFault f, uint32_t p) {
   if (t.fault == ParticleFault::none) t.fault = f, t.fault_particle = p;
@@ -316,7 +354,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   };
 
   // Sums of the bucket, one lane per particle slot of a group, added up at the end.
-  Pack kinetic{}, strain{}, gravity_power{};
+  Pack kinetic{}, strain{}, gravity_power{}, dissipation{};
   for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
     const BodyRun& run = runs[run_index - b.run_begin];
     const BodyInfo& body = bodies[run.body];
@@ -432,6 +470,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               update_material_stress(material, d, s, history);
               const Pack energy = volume0 * material_energy_density(material, d, s, history);
               strain += energy;
+              dissipation += volume0 * material_dissipation_density(material, history);
               for (int q = 0; q < n; ++q) {
                 const uint32_t p = g0 + uint32_t(q);
                 const Real J = d.jacobian[q];
@@ -456,6 +495,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   for (int q = 0; q < pack_width; ++q) {
     tally.kinetic += kinetic[q];
     tally.strain += strain[q];
+    tally.dissipation += dissipation[q];
     tally.gravity_power += gravity_power[q];
   }
 }

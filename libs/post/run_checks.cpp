@@ -31,11 +31,14 @@ RunChecks run_checks(const RunAnalysis& a) {
     const auto& ke = s.column("kinetic_energy", a.run.path);
     const auto& se = s.column("strain_energy", a.run.path);
     const auto& w = s.column("external_work", a.run.path);
-    const size_t n = std::min(u.size(), w.size());
+    // Plastic work (J2 runs' series column) is energy the work put in, not an imbalance.
+    const std::vector<double> none(w.size(), 0.0);
+    const auto& pd = s.has("plastic_dissipation") ? s.column("plastic_dissipation", a.run.path) : none;
+    const size_t n = std::min({u.size(), w.size(), pd.size()});
     if (n > 0 && w[n - 1] != 0) {
-      c.energy_balance_error = std::abs(ke[n - 1] + se[n - 1] - w[n - 1]) / std::abs(w[n - 1]);
+      c.energy_balance_error = std::abs(ke[n - 1] + se[n - 1] + pd[n - 1] - w[n - 1]) / std::abs(w[n - 1]);
       for (size_t i = 0; i < n; ++i)
-        if (w[i] > 1e-3 * w[n - 1] && std::abs(ke[i] + se[i] - w[i]) > 0.05 * std::abs(w[i])) {
+        if (w[i] > 1e-3 * w[n - 1] && std::abs(ke[i] + se[i] + pd[i] - w[i]) > 0.05 * std::abs(w[i])) {
           c.balance_5pct_strain = u[i] / a.run.specimen.gauge_length;
           break;
         }

@@ -21,7 +21,9 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"constraint_work", "J", "work of the fixed and driven point bodies' reactions (zero for a fixed base)"},
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
-       "kinetic + strain + flyer energy - initial - constraint_work - gravity_work - driven and fixed rigid bodies' work"},
+       "kinetic + strain + plastic dissipation + flyer energy - initial - constraint_work - gravity_work - driven and "
+       "fixed rigid bodies' work"},
+      {"plastic_dissipation", "J", "plastic work of the J2 points since the start, sum V0 x j2_plastic_work"},
   };
   if (with_flyer) {
     const std::vector<SeriesColumn> flyer = {
@@ -71,7 +73,7 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
                              displacement,     load_driven,      load_fixed,
                              0.0 - record_(sim),  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
                              d.external_work,  d.max_speed,      d.constraint_work,
-                             d.gravity_work,   d.energy_error};
+                             d.gravity_work,   d.energy_error,   d.plastic_dissipation};
   if (flyer)
     row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
                            0.0 + Eigen::Vector3d(flyer->displacement).dot(axis), flyer->kinetic_energy,

@@ -17,7 +17,7 @@ enum class BodyRole { deformable, fixed, driven };
 inline const double default_ddmp_alpha_peak = 0.5 * std::pow(2.0, -16.0 / 14);
 inline const double default_ddmp_alpha_exponent = 2.0 / 7;
 
-enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp };
+enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp, cpdi1 };
 enum class SchemeKind { usl, usf, musl };
 enum class MaterialModel { linear_elastic, neo_hookean, j2 };
 

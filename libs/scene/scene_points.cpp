@@ -22,10 +22,15 @@ void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& bod
     const int32_t b = body_map[part.body[p]];
     if (b >= 0 && kept_by_trim(scene.bodies[size_t(b)], part.position[p])) kept.push_back(p);
   }
+  // CPDI1 domains survive the merge only while every file has them (a cpdi1 run needs them
+  // for every point and says so when they are missing).
+  const bool domains = all.domain_vertices.size() == before && part.domain_vertices.size() == part.size();
+  if (!domains) all.domain_vertices.clear();
   for (size_t p : kept) {
     all.position.push_back(part.position[p]);
     all.volume.push_back(part.volume[p]);
     all.half_size.push_back(part.half_size[p]);
+    if (domains) all.domain_vertices.push_back(part.domain_vertices[p]);
     all.body.push_back(body_map[part.body[p]]);
   }
   for (auto& [name, mask] : all.tags) mask.resize(before + kept.size(), 0);

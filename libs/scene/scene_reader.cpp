@@ -31,7 +31,8 @@ std::vector<std::string> names_of(const Enum (&values)[N]) {
 
 constexpr BodyRole all_roles[] = {BodyRole::deformable, BodyRole::fixed, BodyRole::driven};
 constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKind::cpgimp,
-                                    ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp};
+                                    ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp,
+                                    ShapeKind::cpdi1};
 constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
 constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean, MaterialModel::j2};
 // A body of the point files that the scene leaves out (Scene::omitted_bodies).
@@ -344,6 +345,7 @@ const char* to_string(ShapeKind shape) {
     case ShapeKind::bspline2: return "bspline2";
     case ShapeKind::bspline3: return "bspline3";
     case ShapeKind::ddmp: return "ddmp";
+    case ShapeKind::cpdi1: return "cpdi1";
   }
   return "?";
 }

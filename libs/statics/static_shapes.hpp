@@ -16,6 +16,10 @@ void with_static_shape(mpm::ShapeFunctionKind kind, F&& f) {
       throw InputError("static solver", "shape_function",
                        "ddmp has no reference-configuration gradient; use linear, ugimp, cpgimp, "
                        "bspline2 or bspline3");
+    else if constexpr (std::is_same_v<decltype(policy), mpm::CpdiShape>)
+      throw InputError("static solver", "shape_function",
+                       "cpdi1 is not offered by the static solver; use linear, ugimp, cpgimp, bspline2 "
+                       "or bspline3");
     else
       f(policy);
   });

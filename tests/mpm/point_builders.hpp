@@ -5,6 +5,7 @@
 #include <string>
 
 #include "mpm/body.hpp"
+#include "mpm/j2_plasticity.hpp"
 #include "mpm/real.hpp"
 #include "mpm/settings.hpp"
 #include "points/point_set.hpp"
@@ -65,6 +66,14 @@ inline MaterialParameters elastic(double young, double poisson, double density,
   m.young_modulus = young;
   m.poisson_ratio = poisson;
   m.density = density;
+  return m;
+}
+
+// Paper B's J2 law (j2_plasticity.hpp) as a body's material.
+inline MaterialParameters j2_material(const J2Parameters& j2, double density) {
+  MaterialParameters m = elastic(j2.young_modulus, j2.poisson_ratio, density, MaterialKind::j2);
+  m.initial_yield = j2.initial_yield, m.saturation_yield = j2.saturation_yield;
+  m.saturation_rate = j2.saturation_rate, m.linear_hardening = j2.linear_hardening;
   return m;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mpm/simulation.hpp"
+#include "free_bar.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -72,13 +73,7 @@ TEST_CASE("A step wave in an elastic bar arrives at the speed set by modulus and
 }
 
 namespace {
-struct BarRun {
-  Real period = 0;  // s, measured
-  Real energy_ratio = 0;  // (kinetic + strain) / initial kinetic at the end
-};
-
-// First free–free mode of a 40-cell bar: v(x, t) = v0 cos(πx/L) cos(ωt), ω = πc/L, period
-// 2L/c. The momentum of the left half is ∝ cos(ωt): its zero crossings are half a period apart.
+// First free–free mode of a 40-cell bar (free_bar.hpp).
 BarRun vibrate_bar(ShapeFunctionKind shape, UpdateScheme scheme, MaterialKind material) {
   const Real h = 1e-3, length = 40 * h, v0 = 0.01;
   PointSet points = empty_point_set(h, 2);
@@ -86,26 +81,7 @@ BarRun vibrate_bar(ShapeFunctionKind shape, UpdateScheme scheme, MaterialKind ma
   Settings s = settings_for(shape, h);
   s.scheme = scheme;
   Simulation sim(points, {deformable("bar", elastic(young, 0, density, material))}, s);
-  for (size_t p = 0; p < sim.particles().size(); ++p)
-    sim.mutable_particles().velocity[p] = Vec3(v0 * std::cos(M_PI * sim.particles().position[p][0] / length), 0, 0);
-  std::vector<Real> crossings;
-  Real previous_t = 0, previous_m = 1;
-  sim.add_observer([&](const Simulation& sm, const StepDiagnostics& d) {
-    const Particles& ps = sm.particles();
-    Real m = 0;
-    for (size_t p = 0; p < ps.size(); ++p)
-      if (ps.position[p][0] < length / 2) m += ps.mass[p] * ps.velocity[p][0];
-    if ((m > 0) != (previous_m > 0))
-      crossings.push_back(previous_t + (d.time - previous_t) * previous_m / (previous_m - m));
-    previous_t = d.time, previous_m = m;
-  });
-  sim.run_until(1.3 * 2 * length / wave_speed);
-  BarRun out;
-  if (crossings.size() >= 2) out.period = 2 * (crossings[1] - crossings[0]);
-  const Real initial = 0.25 * density * length * h * h * v0 * v0;  // ½ ∫ ρ A v² dx
-  const auto& d = sim.last_diagnostics();
-  out.energy_ratio = (d.kinetic_energy + d.strain_energy) / initial;
-  return out;
+  return run_first_axial_mode(sim, length, v0, 1.3 * 2 * length / wave_speed);
 }
 }  // namespace
 

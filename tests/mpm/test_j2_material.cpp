@@ -93,9 +93,7 @@ TEST_CASE("A J2 body in the solver follows the one-point return under a homogene
   PointSet points = empty_point_set(h, 2);
   add_points(points, Eigen::Vector3d::Zero(), Eigen::Vector3d(2e-3, 2e-3, 2e-3), "block");
   const J2Parameters j2 = steel_42crmo4_400c();
-  MaterialParameters m = elastic(j2.young_modulus, j2.poisson_ratio, 7850, MaterialKind::j2);
-  m.initial_yield = j2.initial_yield, m.saturation_yield = j2.saturation_yield;
-  m.saturation_rate = j2.saturation_rate, m.linear_hardening = j2.linear_hardening;
+  const MaterialParameters m = j2_material(j2, 7850);
   Settings settings;
   settings.cell_size = h;
   Simulation sim(points, {deformable("block", m)}, settings);

@@ -136,7 +136,8 @@ TEST_CASE("latmpm-solve --list names exactly the choices the scene reader accept
   };
   const auto shapes = listed("shapes");
   CHECK(shapes.size() >= 2);
-  for (const auto& s : shapes) CHECK(check("grid.shape", s) == 0);
+  // (cpdi1 takes hexahedral domains: the tiny scene's voxel points are refused, exit 2)
+  for (const auto& s : shapes) CHECK(check("grid.shape", s) == (s == "cpdi1" ? 2 : 0));
   for (const auto& s : listed("schemes")) CHECK(check("grid.scheme", s) == 0);
   // (j2 also needs its initial yield stress, the one key without a default)
   for (const auto& m : listed("materials"))
