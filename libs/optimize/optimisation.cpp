@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "optimize/connectivity.hpp"
 #include "optimize/mma_step.hpp"
 
@@ -34,12 +35,14 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
   std::vector<size_t> anchors;
   for (size_t q = 0; q < n; ++q) {
     const Index3 c = grid.cell_of(q);
-    bool held = false;
-    for (int corner = 0; corner < 8 && !held; ++corner) {
+    int held = 0;  // corners held: a whole face (4 of 8; a planar cell's edge) is no hinge
+    for (int corner = 0; corner < 8; ++corner) {
       const Vec3 node = grid.cell_size * Vec3(c[0] + (corner & 1), c[1] + ((corner >> 1) & 1), c[2] + ((corner >> 2) & 1));
-      for (const Support* s : clamps) held = held || s->box.contains(node);
+      bool in = false;
+      for (const Support* s : clamps) in = in || s->box.contains(node);
+      held += in;
     }
-    if (held) anchors.push_back(q);
+    if (held >= 4) anchors.push_back(q);
   }
   SimpMaterial material = settings.material;
   material.weak_ratio = settings.band.enabled ? 0 : 1e-9;
@@ -54,19 +57,35 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     for (size_t q : keep) rho[q] = 1;  // loaded points: solid, not designed
     Real threshold = settings.band.enabled ? settings.band.threshold(k) : 0;
     std::vector<char> mask(n, 1);
-    if (settings.band.enabled) {
-      // Where the threshold would cut every path from the loads to the supports, it is
-      // lowered for this iteration (by 0.05 at a time, not below the schedule's start).
-      bool joined = false;
-      for (;;) {
-        mask = narrow_band_mask(grid, rho, threshold, keep, anchors, &joined);
-        if (joined || threshold <= settings.band.start) break;
+    std::vector<Real> masked(n);
+    ComplianceResult c;
+    // Where the threshold would cut every path from the loads to the supports, or leave a
+    // piece the static solve cannot hold, it is lowered for this iteration (by 0.05 at a
+    // time, not below the schedule's start).
+    // Where even the lowest threshold leaves no solvable band, this iteration fills the whole
+    // domain with the weak material (E_min = 1e-9 E, the band's threshold reported as 0).
+    bool band = settings.band.enabled;
+    for (bool solved = false; !solved;) {
+      bool joined = true;
+      if (band) mask = narrow_band_mask(grid, rho, threshold, keep, anchors, &joined);
+      else mask.assign(n, 1);
+      const bool lowest = threshold <= settings.band.start;
+      if (band && !joined && !lowest) {
         threshold = std::max(settings.band.start, threshold - 0.05);
+        continue;
+      }
+      for (size_t q = 0; q < n; ++q) masked[q] = mask[q] ? rho[q] : 0;
+      SimpMaterial m = material;
+      if (!band) m.weak_ratio = 1e-9;
+      try {
+        c = evaluate_compliance(grid, masked, mask, load_case, m);
+        solved = true;
+      } catch (const NumericalError&) {
+        if (!band) throw;
+        if (lowest) band = false, threshold = 0;
+        else threshold = std::max(settings.band.start, threshold - 0.05);
       }
     }
-    std::vector<Real> masked(n);
-    for (size_t q = 0; q < n; ++q) masked[q] = mask[q] ? rho[q] : 0;
-    ComplianceResult c = evaluate_compliance(grid, masked, mask, load_case, material);
     const Real v = volume_fraction(grid, masked);
     std::vector<Real> d_volume(n);
     for (size_t q = 0; q < n; ++q) d_volume[q] = mask[q] ? grid.point_volume() / grid.domain_volume() : 0;

@@ -3,7 +3,8 @@
 //   2. narrow band (Sec. 3.4, Eq. 36): the largest connected component of {ρ_q > t_k},
 //      with the threshold t_k rising linearly from `start` to `end` over `ramp_iterations`
 //      (Fig. 6), treated as constant within an iteration (the paper's alternating scheme);
-//      lowered for an iteration where it would cut the loads from the supports;
+//      lowered for an iteration where it would cut the loads from the supports; an
+//      iteration whose band no threshold makes solvable uses the weak material instead;
 //      or, without the band, every point with a weak material (E_min = 1e-9 E);
 //   3. static solve, compliance C and ∂C/∂ρ_q (compliance.hpp), volume fraction
 //      v = Σ m_q ρ_q V_q / V_domain (Eq. 15-16, m_q the band mask);
@@ -25,7 +26,7 @@ namespace latmpm::optimize {
 struct NarrowBandSchedule {
   bool enabled = true;
   Real start = 0.01, end = 0.9;  // thresholds t_0 and t_final
-  int ramp_iterations = 60;
+  int ramp_iterations = 90;
   Real threshold(int k) const;
 };
 
