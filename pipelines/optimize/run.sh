@@ -26,8 +26,9 @@ else
   run michell-2d michell-2d.toml
   run distributed-2d distributed-2d.toml
   run distributed-2d-no-band distributed-2d.toml --set optimize.methods=leto --set leto.narrow_band=false
+  run beam-2d-no-correction cantilever-2d.toml --set optimize.methods=leto --set leto.correction_slack=-1
   run beam-3d beam-3d.toml
-  examples="beam-2d michell-2d distributed-2d distributed-2d-no-band beam-3d"
+  examples="beam-2d beam-2d-no-correction michell-2d distributed-2d distributed-2d-no-band beam-3d"
 fi
 python3 "$src/pipelines/optimize/summary.py" "$out" $examples > "$out/summary.md.tmp"
 mv "$out/summary.md.tmp" "$out/summary.md"
