@@ -21,21 +21,19 @@ Real volume_fraction(const DesignGrid& grid, const std::vector<Real>& density) {
   return sum * grid.point_volume() / grid.domain_volume();
 }
 
-OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, Parameterisation& design,
-                            const OptimisationSettings& settings,
-                            const std::function<void(const IterationRecord&)>& on_iteration) {
-  const size_t n = grid.point_count();
-  std::vector<size_t> keep;  // loaded points stay simulated
-  for (const auto& points : loaded_points(grid, load_case)) keep.insert(keep.end(), points.begin(), points.end());
-  // Anchors: points in a cell with a node held in every direction (a component without one
-  // floats; a symmetry plane holds only its normal).
+namespace {
+
+// Points in a cell with a face of nodes held in every direction (a component without one
+// floats or hangs on a hinge; a symmetry plane holds only its normal): 4 of the cell's 8
+// corners, a planar cell's edge counting twice.
+std::vector<size_t> clamp_anchors(const DesignGrid& grid, const LoadCase& load_case) {
   std::vector<const Support*> clamps;
   for (const Support& s : load_case.supports)
     if (s.held[0] && s.held[1] && (s.held[2] || grid.planar)) clamps.push_back(&s);
   std::vector<size_t> anchors;
-  for (size_t q = 0; q < n; ++q) {
+  for (size_t q = 0; q < grid.point_count(); ++q) {
     const Index3 c = grid.cell_of(q);
-    int held = 0;  // corners held: a whole face (4 of 8; a planar cell's edge) is no hinge
+    int held = 0;
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 node = grid.cell_size * Vec3(c[0] + (corner & 1), c[1] + ((corner >> 1) & 1), c[2] + ((corner >> 2) & 1));
       bool in = false;
@@ -44,6 +42,18 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     }
     if (held >= 4) anchors.push_back(q);
   }
+  return anchors;
+}
+
+}  // namespace
+
+OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, Parameterisation& design,
+                            const OptimisationSettings& settings,
+                            const std::function<void(const IterationRecord&)>& on_iteration) {
+  const size_t n = grid.point_count();
+  std::vector<size_t> keep;  // loaded points stay simulated
+  for (const auto& points : loaded_points(grid, load_case)) keep.insert(keep.end(), points.begin(), points.end());
+  const std::vector<size_t> anchors = clamp_anchors(grid, load_case);
   SimpMaterial material = settings.material;
   material.weak_ratio = settings.band.enabled ? 0 : 1e-9;
 
