@@ -280,7 +280,6 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.gravity_work += dt * c.sums.gravity_power;
   d.kinetic_energy = c.sums.kinetic;
   d.strain_energy = c.sums.strain;
-  d.record_force = c.sums.record_volume > 0 ? record_area_ * c.sums.record_stress_volume / c.sums.record_volume : 0;
   d.max_speed = std::sqrt(c.sums.max_speed_sq);
 
   carried.max_speed = std::max(d.max_speed, ledger.max_speed);

@@ -84,7 +84,8 @@ class Simulation {
   size_t grid_memory_bytes() const;
   size_t particle_memory_bytes() const;
 
-  // Record-layer area A (m²) used for Diagnostics::record_force; 0 without record points.
+  // Record-layer area A (m²) of the RecordLayerForce observer (observers.hpp); 0 without
+  // record points.
   Real record_area() const { return record_area_; }
 
   // Checkpoints (simulation_state.cpp): everything a continued run needs to give the same

@@ -20,7 +20,6 @@ void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
   visit("time", d.time);
   visit("dt", d.dt);
   visit("stable_dt", d.stable_dt);
-  visit("record_force", d.record_force);
   visit("kinetic_energy", d.kinetic_energy);
   visit("strain_energy", d.strain_energy);
   visit("external_work", d.external_work);

@@ -71,8 +71,6 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
     local.kinetic += t.kinetic;
     local.strain += t.strain;
     local.gravity_power += t.gravity_power;
-    local.record_stress_volume += t.record_stress_volume;
-    local.record_volume += t.record_volume;
     local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
     local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
   }
@@ -87,8 +85,6 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
   }
   if (gradient) {
     sums.strain = c.domain.reduce_sum(local.strain);
-    sums.record_stress_volume = c.domain.reduce_sum(local.record_stress_volume);
-    sums.record_volume = c.domain.reduce_sum(local.record_volume);
     sums.max_wave_speed_sq = c.domain.reduce_max(local.max_wave_speed_sq);
   }
 }

@@ -42,7 +42,7 @@ using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
 
 // The particle passes' sums (after the domain's reductions).
 struct PassSums {
-  Real kinetic = 0, strain = 0, gravity_power = 0, record_stress_volume = 0, record_volume = 0;
+  Real kinetic = 0, strain = 0, gravity_power = 0;
   Real max_speed_sq = 0, max_wave_speed_sq = 0;
 };
 
