@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "optimize/connectivity.hpp"
@@ -58,6 +59,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
   material.weak_ratio = settings.band.enabled ? 0 : 1e-9;
 
   OptimisationResult result;
+  Real best_compliance = std::numeric_limits<Real>::infinity();
   std::vector<Real> x = design.initial(), lower, upper, move, rho;
   design.bounds(lower, upper, move);
   for (int k = 0; k < settings.max_iterations; ++k) {
@@ -101,18 +103,24 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     for (size_t q = 0; q < n; ++q) d_volume[q] = mask[q] ? grid.point_volume() / grid.domain_volume() : 0;
     for (size_t q : keep) c.gradient[q] = d_volume[q] = 0;
 
-    result.density = masked;
-    result.active = mask;
-    result.x = x;
     IterationRecord record{k, c.compliance, v, threshold, 0, c.active_points, c.unknowns};
+    // The design kept: the last one until the schedules end, then the stiffest that meets
+    // the volume bound (the band's alternation makes late iterates oscillate).
+    const bool schedules_done = design.continuation_done() && (!settings.band.enabled || k >= settings.band.ramp_iterations);
+    const bool feasible = v <= settings.volume_fraction * 1.005;
+    if (!schedules_done || result.history.empty() || (feasible && c.compliance < best_compliance)) {
+      result.density = masked;
+      result.active = mask;
+      result.x = x;
+      if (schedules_done && feasible) best_compliance = c.compliance;
+    }
 
     // Converged: C steady over the last 5 iterations, volume bound met, schedules at their end.
     const auto& h = result.history;
-    const bool schedules_done = design.continuation_done() && (!settings.band.enabled || k >= settings.band.ramp_iterations);
     bool steady = h.size() >= 5;
     for (size_t i = h.size() >= 5 ? h.size() - 5 : 0; steady && i < h.size(); ++i)
       steady = std::abs(h[i].compliance - c.compliance) <= settings.tolerance * c.compliance;
-    if (schedules_done && steady && v <= settings.volume_fraction * 1.005) {
+    if (schedules_done && steady && feasible) {
       result.converged = true;
       record.seconds = std::chrono::duration<Real>(std::chrono::steady_clock::now() - t0).count();
       result.history.push_back(record);

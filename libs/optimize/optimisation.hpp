@@ -11,6 +11,8 @@
 //   4. one MMA step (mma_step.hpp) on min C s.t. v − v* ≤ 0.
 // The points carrying a load are solid and not designed (ρ = 1, no sensitivity): the load
 // stays on the structure (paper C loads a grid node; docs/paper-c.md).
+// The result is the last design until the band (and SIMP's β) reach their end, then the
+// stiffest design that meets the volume bound within 0.5 %.
 // Stops when C changed by less than `tolerance` (relative) over 5 iterations, the volume
 // bound holds within 0.5 %, the band threshold (and SIMP's continuation) are at their end;
 // or after max_iterations.
@@ -45,7 +47,7 @@ struct IterationRecord {
 };
 
 struct OptimisationResult {
-  std::vector<Real> density;  // ρ_q of the final design (0 outside the band)
+  std::vector<Real> density;  // ρ_q of the kept design (0 outside the band)
   std::vector<char> active;   // the final band mask
   std::vector<Real> x;        // the final design variables
   std::vector<IterationRecord> history;
