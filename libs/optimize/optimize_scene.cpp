@@ -100,7 +100,7 @@ void read_optimizer(TableReader t, OptimizeScene& s) {
   OptimisationSettings& o = s.settings;
   o.volume_fraction = t.number("volume_fraction");
   if (!(o.volume_fraction > 0 && o.volume_fraction < 1)) t.fail("volume_fraction", "must lie in (0, 1)");
-  o.max_iterations = int(t.integer("max_iterations", 200));
+  o.max_iterations = int(t.integer("max_iterations", 250));
   if (o.max_iterations < 1) t.fail("max_iterations", "must be at least 1");
   o.tolerance = t.number("tolerance", 1e-3);
   if (!(o.tolerance > 0)) t.fail("tolerance", "must be positive");
@@ -126,7 +126,7 @@ void read_leto(TableReader t, OptimizeScene& s) {
   b.start = t.number("band_start", 0.01);
   b.end = t.number("band_end", 0.9);
   if (!(b.start >= 0 && b.start <= b.end && b.end < 1)) t.fail("band_end", "need 0 ≤ band_start ≤ band_end < 1");
-  b.ramp_iterations = int(t.integer("band_ramp", 60));
+  b.ramp_iterations = int(t.integer("band_ramp", 90));
   s.correction_slack = int(t.integer("correction_slack", 2 * s.grid.per_cell));
   s.leto_binarise = t.number("binarise", 0.9);
   t.finish();
