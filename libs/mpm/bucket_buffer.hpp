@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "mpm/node_lanes.hpp"
 #include "mpm/particle_buckets.hpp"
 #include "mpm/shape_ddmp.hpp"
 #include "mpm/sparse_grid.hpp"
@@ -77,33 +78,40 @@ void for_each_box_run(const Bucket& b, const BlockTable& table, GridPtr grid_blo
   }
 }
 
-// Zeroes the buffer nodes of the bucket's box.
+// Zeroes the buffer nodes of the bucket's box. Runs are a few nodes long: one SIMD store
+// per node beats a call to memset per run (the box passes cost 10 % of a step with the calls).
 inline void clear_box(const Bucket& b, BucketBuffer& buffer) {
+  const int nodes = b.box_hi[2] - b.box_lo[2] + 1;
   for (int i = b.box_lo[0]; i <= b.box_hi[0]; ++i)
     for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
       Real* row = buffer.data.data() + buffer.offset(i, j, b.box_lo[2]);
-      std::fill(row, row + (b.box_hi[2] - b.box_lo[2] + 1) * lane::count, Real(0));
+      for (int n = 0; n < nodes; ++n) store_lanes(row + n * lane::count, NodeLanes{});
     }
 }
 
 // Adds the buffer's box into the grid: lanes 0–6 summed, the constraint lane by maximum
-// (so the same rigid body wins wherever it touches, independent of order).
+// (so the same rigid body wins wherever it touches, independent of order). One node is one
+// SIMD value: all lanes summed at once, then the constraint lane replaced by the maximum.
 inline void add_box_to_grid(const Bucket& b, const BlockTable& table, SparseGrid& grid,
                             BucketBuffer& buffer) {
   for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
                    [](Real* g, const Real* l, int count) {
                      for (int n = 0; n < count; ++n, g += lane::count, l += lane::count) {
-                       for (int c = 0; c < lane::constraint; ++c) g[c] += l[c];
-                       g[lane::constraint] = std::max(g[lane::constraint], l[lane::constraint]);
+                       const NodeLanes grid_node = load_lanes(g), buffer_node = load_lanes(l);
+                       NodeLanes sum = grid_node + buffer_node;
+                       sum[lane::constraint] = std::max(grid_node[lane::constraint], buffer_node[lane::constraint]);
+                       store_lanes(g, sum);
                      }
                    });
 }
 
-// Copies the grid's nodes of the bucket's box into the buffer.
+// Copies the grid's nodes of the bucket's box into the buffer (node by node, as above).
 inline void copy_box_from_grid(const Bucket& b, const BlockTable& table, const SparseGrid& grid,
                                BucketBuffer& buffer) {
   for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
-                   [](const Real* g, Real* l, int count) { std::copy(g, g + count * lane::count, l); });
+                   [](const Real* g, Real* l, int count) {
+                     for (int n = 0; n < count; ++n) store_lanes(l + n * lane::count, load_lanes(g + n * lane::count));
+                   });
 }
 
 }  // namespace latmpm::mpm
