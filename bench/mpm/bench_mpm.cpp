@@ -1,11 +1,18 @@
 // Solver throughput: particle-updates per second (particles × steps / wall seconds) of the
 // explicit MPM step on an elastic block, per shape function and thread count.
 //   bench_mpm [--cells N] [--steps S] [--threads T] [--shape NAME] [--scheme NAME] [--ddmp-on-grid 0|1]
+//             [--digest 1] [--dump FILE]
 // Prints one line per run; bench/mpm/run.sh runs the set recorded in docs/benchmarks.md.
+// --digest 1 adds a hash of the final particle state (positions, velocities, F, σ, in the
+// particles' original order): two builds that print the same digest computed bit-identical
+// results, the check a kernel change that claims to keep the rounding must pass. --dump FILE
+// writes the same state as raw doubles (21 per particle, id order) to compare two builds.
 #include <chrono>
 #include <ctime>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -44,13 +51,49 @@ PointSet elastic_block(int cells, double h, int ppc) {
       }
   return ps;
 }
+
+// Each particle's state in id order: position, velocity, F, σ (21 values).
+std::vector<double> state_values(const Particles& ps) {
+  std::vector<uint32_t> by_id(ps.size());
+  for (size_t p = 0; p < ps.size(); ++p) by_id[ps.id[p]] = uint32_t(p);
+  std::vector<double> out;
+  out.reserve(ps.size() * 21);
+  for (const uint32_t p : by_id) {
+    for (int a = 0; a < 3; ++a) out.push_back(ps.position[p][a]);
+    for (int a = 0; a < 3; ++a) out.push_back(ps.velocity[p][a]);
+    for (int a = 0; a < 9; ++a) out.push_back(ps.deformation[p].data()[a]);
+    for (int a = 0; a < 6; ++a) out.push_back(ps.stress[p][a]);
+  }
+  return out;
+}
+
+// FNV-1a over the bytes of each particle's state, particles taken in id order (the solver
+// sorts them by bucket, and the order may differ between builds without the values differing).
+uint64_t state_digest(const Particles& ps) {
+  std::vector<uint32_t> by_id(ps.size());
+  for (size_t p = 0; p < ps.size(); ++p) by_id[ps.id[p]] = uint32_t(p);
+  uint64_t hash = 1469598103934665603ull;
+  auto add = [&](const void* data, size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i) hash = (hash ^ b[i]) * 1099511628211ull;
+  };
+  for (const uint32_t p : by_id) {
+    add(ps.position[p].data(), sizeof(Real) * 3);
+    add(ps.velocity[p].data(), sizeof(Real) * 3);
+    add(ps.deformation[p].data(), sizeof(Real) * 9);
+    add(ps.stress[p].data(), sizeof(Real) * 6);
+  }
+  return hash;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   int cells = 40, steps = 20, threads = 0;
   std::vector<std::string> shapes = {"linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp"};
   std::string scheme = "usl";
-  bool ddmp_on_grid = true;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
+  bool ddmp_on_grid = true;
+  bool digest = false;
+  std::string dump;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--cells") cells = std::atoi(value.c_str());
@@ -59,6 +102,8 @@ int main(int argc, char** argv) {
     else if (key == "--shape") shapes = {value};
     else if (key == "--scheme") scheme = value;
     else if (key == "--ddmp-on-grid") ddmp_on_grid = value != "0";
+    else if (key == "--digest") digest = value != "0";
+    else if (key == "--dump") dump = value;
     else {
       std::fprintf(stderr, "bench_mpm: unknown option %s\n", key.c_str());
       return 1;
@@ -96,6 +141,16 @@ int main(int argc, char** argv) {
                 shape.c_str(), scheme.c_str(), threads, sim.particles().size(), steps, seconds, cpu, rate,
                 double(sim.particle_memory_bytes()) / sim.particles().size(), sim.grid_memory_bytes() / 1e6,
                 sim.active_grid_blocks());
+    if (!dump.empty()) {
+      const std::vector<double> values = state_values(sim.particles());
+      FILE* f = std::fopen(dump.c_str(), "wb");
+      if (!f || std::fwrite(values.data(), sizeof(double), values.size(), f) != values.size()) {
+        std::fprintf(stderr, "bench_mpm: cannot write %s\n", dump.c_str());
+        return 2;
+      }
+      std::fclose(f);
+    }
+    if (digest) std::printf("  state digest %016llx\n", (unsigned long long)state_digest(sim.particles()));
   }
   return 0;
 }

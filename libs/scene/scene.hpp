@@ -116,6 +116,7 @@ struct SolverSpec {
   std::string linear_solver = "cholmod";  // static: "cholmod", "ldlt" or "cg"
   double tolerance = 1e-8;              // static: relative residual force of each increment
   bool check_stability = true;          // static: end the path at the first unstable equilibrium
+  double stabilisation = 0.1;           // static: β of the affine stabilisation (× shear modulus)
   std::string where;
 };
 

@@ -304,6 +304,8 @@ void read_solver(TableReader solver, Scene& s) {
     spec.tolerance = solver.number("tolerance", 1e-8);
     if (!(spec.tolerance > 0 && spec.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
     spec.check_stability = solver.boolean("check_stability", true);
+    spec.stabilisation = solver.number("stabilisation", 0.1);
+    if (!(spec.stabilisation >= 0 && spec.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
     if (s.end.kind != EndCondition::plate_displacement)
       solver.fail("kind", "a static solve needs run.end = { plate_displacement = \"...\" }");
   }
