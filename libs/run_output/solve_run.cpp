@@ -52,6 +52,7 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
   for (size_t b = 0; b < count.size(); ++b)
     points_summary_ += "body " + points.body_names[b] + " (" + to_string(scene_.bodies[b].role) +
                        "): " + std::to_string(count[b]) + " points\n";
+  if (!scene_.quasi_static_note.empty()) points_summary_ += scene_.quasi_static_note + "\n";
   for (const BodySpec& b : scene_.omitted_bodies)
     points_summary_ += "body " + b.name + " (omitted): its points are not simulated\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),

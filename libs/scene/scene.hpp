@@ -21,6 +21,13 @@ enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp, cpdi1 };
 enum class SchemeKind { usl, usf, musl };
 enum class MaterialModel { linear_elastic, neo_hookean, j2 };
 
+// The CFL number a scene runs at unless [time] sets cfl or dt: per shape function, the largest
+// of 0.3, 0.5, 0.6 ... 1.0 up to which paper A's column (cell 0.4 mm; for uGIMP also the QUICK
+// T2P30 lattice) finished with its load within 1 % of the run at 0.3, measured (docs/tradeoff.md, "Time step";
+// pipelines/tradeoff/cfl-matrix.sh). The step is dt = cfl · h / max_p(c_p + |v_p|), adapted
+// every step (mpm::Settings).
+double default_cfl(ShapeKind shape);
+
 const char* to_string(BodyRole role);
 const char* to_string(ShapeKind shape);
 const char* to_string(SchemeKind scheme);
@@ -128,9 +135,13 @@ struct Scene {
   double ddmp_alpha_exponent = default_ddmp_alpha_exponent;
   bool ddmp_on_grid = true;            // DDMP's smoothed gradient on the grid (mpm::Settings)
 
-  double cfl = 0.3;      // used when dt == 0
+  double cfl = 0.3;      // used when dt == 0; read: default_cfl(shape)
   double dt = 0;         // s, fixed step when > 0
   double mass_scaling = 1;  // multiplies every deformable body's density (paper A Sec. 4: 6)
+  // [time] quasi_static = { load_error = 0.03 }: mass_scaling picked by the quasi-static mode
+  // (quasi_static_mode.hpp) for this bound on the load error (fraction of the peak); 0: off.
+  double quasi_static_load_error = 0;
+  std::string quasi_static_note;  // the mode's pick and why, for the log
 
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s²
 

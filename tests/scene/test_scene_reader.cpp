@@ -264,3 +264,17 @@ TEST_CASE("An omitted body is listed apart from the simulated ones and kept in t
   REQUIRE(again.omitted_bodies.size() == 1);
   CHECK(again.omitted_bodies[0].name == "top");
 }
+
+TEST_CASE("Without cfl or dt a scene runs at its shape function's measured cfl, written to the resolved scene", "[scene]") {
+  for (const char* shape : {"linear", "ugimp", "ddmp"}) {
+    CAPTURE(shape);
+    const Scene s = parse(with_line(7, ""), {std::string("grid.shape=") + shape});
+    CHECK(s.cfl == default_cfl(s.shape));
+    CHECK(s.cfl > 0);
+    CHECK(s.cfl <= 1);
+    CHECK(parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent").cfl == s.cfl);
+  }
+  // uGIMP's measured limit is above the old fixed 0.3 (docs/tradeoff.md, "Time step").
+  CHECK(default_cfl(ShapeKind::ugimp) > 0.3);
+  CHECK(parse(base_scene).cfl == 0.25);  // a given cfl wins
+}
