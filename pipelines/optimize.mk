@@ -1,7 +1,7 @@
 # make optimize [QUICK=1]: paper C (LETO topology optimisation) against the SIMP baseline,
 # with latmpm-optimize (docs/paper-c.md).
 #   QUICK=1: the 2D concentrated-load beam (60x20 cells) and the 3D beam (24x8x6 cells, half
-#            model), 130 iterations at most: about 5 minutes on 2 cores.
+#            model), 200 iterations at most: about 4 minutes on 2 cores.
 #   full:    the 2D concentrated-load beam (60x20 cells), the Michell truss (40x20), the 2D
 #            distributed-load beam (40x20) with and without LETO's narrow band, the 3D beam
 #            (24x8x6 cells, half model).

@@ -8,9 +8,15 @@
 namespace latmpm::optimize {
 namespace {
 
+// Comment lines; control characters (user text from the command line) shown as '?', so no
+// line of it can become CSV data or gnuplot code.
 std::string comments(const std::vector<std::string>& lines) {
   std::string s;
-  for (const auto& l : lines) s += "# " + l + "\n";
+  for (const auto& l : lines) {
+    s += "# ";
+    for (char c : l) s += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
+    s += "\n";
+  }
   return s;
 }
 
@@ -54,7 +60,7 @@ void write_method_files(const std::string& directory, const OptimizeScene& scene
   if (g.planar)
     gp << "plot '" << o.method << "-design.csv' every ::1 using 1:2:5 with image\n";
   else
-    gp << "set view 60,30\nset view equal xyz\nset zlabel 'z (mm)'\n"
+    gp << "set view 70,20\nset view equal xyz\nset zlabel 'z (mm)'\n"
        << "splot '" << o.method << "-design.csv' every ::1 using 1:2:($5 > 0.5 ? $3 : 1/0) with points pt 7 ps 0.5 lc rgb 'black'\n";
   write_file_atomically(stem + "-design.gp", gp.str(), "--output");
 }

@@ -17,8 +17,8 @@ run() {  # name scene [--set ...]
 if [ "$mode" = quick ]; then
   # The scenes' sizes (2D 60x20, 3D 24x8x6 cells): smaller grids leave too few cells across
   # the kernel (1.5 cells) for LETO, and a band ramp shorter than 90 iterations cuts members
-  # (docs/paper-c.md); 130 iterations at most.
-  quick=(--set optimize.max_iterations=130)
+  # (docs/paper-c.md); 200 iterations at most.
+  quick=(--set optimize.max_iterations=200)
   run beam-2d cantilever-2d.toml "${quick[@]}"
   run beam-3d beam-3d.toml "${quick[@]}"
   examples="beam-2d beam-3d"
