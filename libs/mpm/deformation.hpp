@@ -15,6 +15,15 @@ struct Deformation {
   Real dt;                    // s
 };
 
+// det F, written out once for the gather kernel (T = Pack) and the observers that read J
+// back from the stored F in the same lane order (observers.cpp): the same expression gives
+// the same bits.
+template <class T>
+inline T determinant(const T (&F)[3][3]) {
+  return F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) - F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
+         F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
+}
+
 // Cauchy stress in Voigt order xx yy zz yz xz xy, Pa.
 template <class T>
 using Stress = T[6];

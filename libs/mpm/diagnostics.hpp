@@ -27,9 +27,6 @@ struct StepDiagnostics {
   // hold_tag); zero when it holds none.
   std::vector<Vec3> reaction;
 
-  // Record-layer force A · σ̄_zz (N, tension positive; see Settings::record_tag).
-  Real record_force = 0;
-
   Real kinetic_energy = 0;  // ½ Σ m v² over deformable points, J
   Real strain_energy = 0;   // Σ V0 ψ over deformable points, J (linear elastic: ½ σ:ε V)
   // Work done on the deformable material by reactions of driven bodies and by gravity,

@@ -5,9 +5,10 @@
 //   exchange_halo      after P2G: nodal sums of the blocks this process shares with its
 //                      neighbours added up (mass, momentum, force, constraint markers), so
 //                      the grid update sees whole nodes (Cabana's halo "scatter").
-//   reduce_sum/max     the step's global sums (energies, speeds for the stable time step,
-//                      reactions) over all processes.
-//   migrate_particles  after a sort: particles that left this process's part handed on.
+//   reduce_sum/max/min the step's global sums (energies, speeds for the stable time step,
+//                      reactions of the node update, rigid couplings and contact, body
+//                      centres) over all processes.
+//   migrate_particles  before a sort: particles that left this process's part handed on.
 //
 // For one process each does nothing, and a run's results do not depend on it. An MPI domain
 // must keep results bit-identical to one process (sums in a fixed order), as the thread
@@ -24,7 +25,9 @@ class SingleProcessDomain {
  public:
   void exchange_halo(SparseGrid&) const {}
   Real reduce_sum(Real local) const { return local; }
+  Vec3 reduce_sum(const Vec3& local) const { return local; }
   Real reduce_max(Real local) const { return local; }
+  Real reduce_min(Real local) const { return local; }
   void migrate_particles(Particles&) const {}
   int process_count() const { return 1; }
 };

@@ -27,15 +27,25 @@ Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
     for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
       Real* node = block + n * lane::count;
       const Real m = node[lane::mass];
+      const int body = constrained_body(node);
       if (!(m > 0)) {
-        for (int c = lane::momentum; c < lane::constraint; ++c) node[c] = 0;
+        // A held node without mass still moves with its body: DDMP's smoothed gradient reads
+        // the velocity of nodes one cell beyond the points' cells, and its smoothed force
+        // reaches them; that force acts on the body, so it is part of the reaction.
+        Vec3 v = Vec3::Zero();
+        if (body >= 0 && !bodies[size_t(body)].hold_slip) {
+          v = bodies[size_t(body)].velocity;
+          const Vec3 r = -Vec3(node[4], node[5], node[6]);
+          block_force[b * nb + size_t(body)] += r;
+          block_power[b * nb + size_t(body)] += r.dot(v);
+        }
+        for (int c = 0; c < 3; ++c) node[lane::momentum + c] = v[c], node[lane::force + c] = 0;
         continue;
       }
       const Vec3 p(node[1], node[2], node[3]);
       const Vec3 f = Vec3(node[4], node[5], node[6]) + m * gravity;
       const Vec3 v_old = p / m;
       Vec3 v_new;
-      const int body = constrained_body(node);
       if (body >= 0 && bodies[size_t(body)].hold_slip) {
         // Roller: the free update without its component along the held face's normal.
         const Vec3& normal = bodies[size_t(body)].hold_outward;

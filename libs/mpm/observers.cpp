@@ -1,9 +1,12 @@
 #include "mpm/observers.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "mpm/deformation.hpp"
+#include "mpm/simd.hpp"
 
 namespace latmpm::mpm {
 
@@ -113,5 +116,47 @@ void BodiesApartCheck::operator()(const Simulation& sim, const StepDiagnostics& 
   }
 }
 
+
+Real RecordLayerForce::operator()(const Simulation& sim) const {
+  if (!(area_ > 0)) return 0;
+  const SolverState& state = sim.state();
+  const Particles& ps = state.particles;
+  const auto& runs = state.buckets.runs();
+  Real stress_volume = 0, volume = 0;
+  for (const Bucket& b : state.buckets.buckets()) {
+    Pack bucket_stress_volume{}, bucket_volume{};
+    for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
+      const BodyRun& run = runs[r];
+      if (sim.bodies()[size_t(run.body)].role != BodyRole::deformable) continue;
+      for (uint32_t g0 = run.begin; g0 < run.end; g0 += pack_width) {
+        const int n = int(std::min<uint32_t>(pack_width, run.end - g0));
+        // A group without record points adds zeros; lanes of other points hold zero volume.
+        Pack record{}, stress_zz{}, volume0{}, F[3][3];
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) F[i][j] = Pack{} + (i == j ? Real(1) : Real(0));
+        bool any = false;
+        for (int q = 0; q < n; ++q) {
+          const uint32_t p = g0 + uint32_t(q);
+          if (!(ps.flags[p] & Particles::record_flag)) continue;
+          any = true;
+          record[q] = 1;
+          stress_zz[q] = ps.stress[p][2];
+          volume0[q] = ps.volume0[p];
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) F[i][j][q] = ps.deformation[p](i, j);
+        }
+        if (!any) continue;
+        const Pack current_volume = record * determinant(F) * volume0;
+        bucket_stress_volume += stress_zz * current_volume;
+        bucket_volume += current_volume;
+      }
+    }
+    Real bucket_sv = 0, bucket_v = 0;
+    for (int q = 0; q < pack_width; ++q) bucket_sv += bucket_stress_volume[q], bucket_v += bucket_volume[q];
+    stress_volume += bucket_sv;
+    volume += bucket_v;
+  }
+  return volume > 0 ? area_ * stress_volume / volume : 0;
+}
 
 }  // namespace latmpm::mpm

@@ -1,14 +1,14 @@
-// The solver's step and its bookkeeping. The stages themselves live in transfer.hpp
-// (particles ↔ grid) and grid_update.cpp (nodes); simulation_impl.hpp orders them per update
-// scheme and keeps the particle buckets and active grid blocks current; this file builds the
-// particles, advances time and turns the passes' sums into diagnostics and checks.
+// The solver's step and its bookkeeping. The stages themselves are functions over the state
+// (step_stages.hpp, which orders them per update scheme; transfer.hpp and grid_update.cpp
+// hold the particle and node loops); this file builds the state from the points, advances
+// time and turns the passes' sums into diagnostics and checks.
 #include "mpm/simulation.hpp"
 
 #include <map>
 
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
-#include "mpm/simulation_impl.hpp"
+#include "mpm/step_stages.hpp"
 #include "points/point_set.hpp"
 
 namespace latmpm::mpm {
@@ -48,7 +48,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     }
     bodies_.push_back(b);
   }
-  impl_ = std::make_unique<Impl>(*this, settings_.threads);
+  context_ = std::make_unique<StepContext>(settings_, bodies_, rigid_bodies_);
   for (const auto& b : bodies_) {
     BodyInfo info;
     info.role = b.role;
@@ -57,38 +57,38 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     if (b.role == BodyRole::deformable) {
       info.model = make_material_model(b.material, settings_.mass_scaling);
       info.history_columns = std::visit(
-          [&](const auto& model) { return declare_history<std::decay_t<decltype(model)>>(particles_); }, info.model);
+          [&](const auto& model) { return declare_history<std::decay_t<decltype(model)>>(state_.particles); }, info.model);
     }
-    impl_->body_info.push_back(info);
+    context_->body_info.push_back(info);
   }
   for (const auto& b : bodies_)
     if (b.role == BodyRole::driven) check_body_speed(b.velocity.norm(), where, "bodies." + b.name + ".velocity");
   // Point-defined boundaries: fixed and driven bodies, deformable bodies' held points.
   for (size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].role != BodyRole::deformable || !bodies_[b].hold_tag.empty())
-      boundaries_.push_back(PointBoundary{b, bodies_[b].name, bodies_[b].role, impl_->body_info[b].velocity});
+      state_.boundaries.push_back(PointBoundary{b, bodies_[b].name, bodies_[b].role, context_->body_info[b].velocity});
 
   // Particles from the points.
   const size_t n = points.size();
-  particles_.resize(n);
+  state_.particles.resize(n);
   const auto record = settings_.record_tag.empty() ? points.tags.end() : points.tags.find(settings_.record_tag);
   Real record_volume = 0, z_min = std::numeric_limits<Real>::infinity(), z_max = -z_min;
   for (size_t p = 0; p < n; ++p) {
     const BodySettings& b = bodies_[size_t(points.body[p])];
-    particles_.position[p] = points.position[p];
-    particles_.volume0[p] = points.volume[p];
-    particles_.mass[p] = b.material.density * settings_.mass_scaling * points.volume[p];
-    particles_.velocity[p] = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
+    state_.particles.position[p] = points.position[p];
+    state_.particles.volume0[p] = points.volume[p];
+    state_.particles.mass[p] = b.material.density * settings_.mass_scaling * points.volume[p];
+    state_.particles.velocity[p] = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
     // A point without a GIMP domain gets the voxelizer's, half a point spacing.
     Vec3 half = points.half_size[p];
     for (int a = 0; a < 3; ++a)
       if (!(half[a] > 0)) half[a] = points.cell_size / (2 * points.ppc);
-    particles_.half_size0[p] = half;
-    particles_.body[p] = points.body[p];
-    particles_.id[p] = uint32_t(p);
-    if (!b.hold_tag.empty() && points.tags.at(b.hold_tag)[p]) particles_.flags[p] |= Particles::held_flag;
+    state_.particles.half_size0[p] = half;
+    state_.particles.body[p] = points.body[p];
+    state_.particles.id[p] = uint32_t(p);
+    if (!b.hold_tag.empty() && points.tags.at(b.hold_tag)[p]) state_.particles.flags[p] |= Particles::held_flag;
     if (record != points.tags.end() && record->second[p]) {
-      particles_.flags[p] |= Particles::record_flag;
+      state_.particles.flags[p] |= Particles::record_flag;
       record_volume += points.volume[p];
       z_min = std::min(z_min, points.position[p][2]);
       z_max = std::max(z_max, points.position[p][2]);
@@ -102,12 +102,12 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
       const size_t b = size_t(points.body[p]);
       all[b] += points.volume[p] * points.position[p];
       all_volume[b] += points.volume[p];
-      if (particles_.flags[p] & Particles::held_flag) held[b] += points.volume[p] * points.position[p], held_volume[b] += points.volume[p];
+      if (state_.particles.flags[p] & Particles::held_flag) held[b] += points.volume[p] * points.position[p], held_volume[b] += points.volume[p];
     }
     for (size_t b = 0; b < bodies_.size(); ++b) {
       if (!(held_volume[b] > 0)) continue;
       const Vec3 d = held[b] / held_volume[b] - all[b] / all_volume[b];
-      if (d.norm() > 1e-9 * settings_.cell_size) impl_->body_info[b].hold_outward = d.normalized();
+      if (d.norm() > 1e-9 * settings_.cell_size) context_->body_info[b].hold_outward = d.normalized();
       else if (bodies_[b].hold_slip)
         throw InputError(where, "bodies." + bodies_[b].name + ".hold.slip",
                          "the held points have no face direction (their centroid is the body's); clamp them instead");
@@ -121,13 +121,14 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
   }
   for (size_t p = 0; p < n; ++p)
     for (int a = 0; a < 3; ++a)
-      if (!(std::abs(particles_.position[p][a] / settings_.cell_size) < max_cell_coord))
+      if (!(std::abs(state_.particles.position[p][a] / settings_.cell_size) < max_cell_coord))
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
 
-  diagnostics_.body_displacement.assign(bodies_.size(), Vec3::Zero());
-  diagnostics_.reaction.assign(bodies_.size(), Vec3::Zero());
-  diagnostics_.stable_dt = stable_time_step();
+  state_.diagnostics.body_displacement.assign(bodies_.size(), Vec3::Zero());
+  state_.diagnostics.reaction.assign(bodies_.size(), Vec3::Zero());
+  refresh_carried(state_, *context_);
+  state_.diagnostics.stable_dt = stable_time_step();
   // The built-in observers (observers.hpp): the first to see each step.
   observers_.push_back(BodiesApartCheck(*this));
 }
@@ -135,9 +136,9 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
 Simulation::~Simulation() = default;
 
 Particles& Simulation::mutable_particles() {
-  impl_->refresh_needed = true;
-  impl_->needs_sort = true;
-  return particles_;
+  context_->refresh_needed = true;
+  state_.needs_sort = true;
+  return state_.particles;
 }
 
 void Simulation::add_observer(Observer observer) { observers_.push_back(std::move(observer)); }
@@ -151,7 +152,7 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
   std::string slowest;
   for (size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].role == BodyRole::deformable) {
-      const Real cb = std::sqrt(std::visit([](const auto& m) { return m.wave_speed_squared(1); }, impl_->body_info[b].model));
+      const Real cb = std::sqrt(std::visit([](const auto& m) { return m.wave_speed_squared(1); }, context_->body_info[b].model));
       if (cb < c) c = cb, slowest = bodies_[b].name;
     }
   if (speed >= c) {
@@ -165,7 +166,7 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
 
 void Simulation::add_rigid_body(const RigidBodySettings& body) {
   const std::string where = "rigid_bodies." + body.name;
-  if (diagnostics_.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
+  if (state_.diagnostics.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
   for (const auto& b : rigid_bodies_)
     if (b.name == body.name) throw InputError(where, "", "is given twice");
   validate(body, "scene");
@@ -173,27 +174,27 @@ void Simulation::add_rigid_body(const RigidBodySettings& body) {
   rigid_bodies_.push_back(body);
   RigidBodyState state;
   state.velocity = body.velocity;
-  initial_rigid_energy_ += rigid_kinetic_energy(body, state);
+  state_.carried.initial_rigid_energy += rigid_kinetic_energy(body, state);
   RigidBoundary rigid{rigid_bodies_.size() - 1, body, state};
   if (body.coupling == RigidCoupling::penalty)
-    boundaries_.push_back(PenaltyBoundary{rigid});
+    state_.boundaries.push_back(PenaltyBoundary{rigid});
   else
-    boundaries_.push_back(rigid);
+    state_.boundaries.push_back(rigid);
   refresh_rigid_states();
-  diagnostics_.rigid_energy = initial_rigid_energy_;
-  impl_->refresh_needed = true;  // its speed enters the stable time step
-  if (body.coupling == RigidCoupling::penalty) impl_->enable_penalty_contact();
+  state_.diagnostics.rigid_energy = state_.carried.initial_rigid_energy;
+  context_->refresh_needed = true;  // its speed enters the stable time step
+  if (body.coupling == RigidCoupling::penalty) enable_penalty_contact(state_, *context_);
 }
 
 void Simulation::refresh_rigid_states() {
-  diagnostics_.rigid.clear();
-  for (const auto& b : boundaries_)
-    if (const RigidBoundary* r = as_rigid(b)) diagnostics_.rigid.push_back(r->state);
+  state_.diagnostics.rigid.clear();
+  for (const auto& b : state_.boundaries)
+    if (const RigidBoundary* r = as_rigid(b)) state_.diagnostics.rigid.push_back(r->state);
 }
 
 std::vector<BoundaryReport> Simulation::boundary_reports() const {
   std::vector<BoundaryReport> out;
-  for (const auto& b : boundaries_) {
+  for (const auto& b : state_.boundaries) {
     out.push_back(std::visit([](const auto& boundary) { return boundary.report(); }, b));
     if (const RigidBoundary* r = as_rigid(b))
       out.back().potential_energy = rigid_potential_energy(r->settings, r->state, settings_.gravity);
@@ -201,9 +202,9 @@ std::vector<BoundaryReport> Simulation::boundary_reports() const {
   return out;
 }
 
-const std::vector<Vec3>& Simulation::contact_forces() const { return impl_->contact.force; }
+const std::vector<Vec3>& Simulation::contact_forces() const { return context_->contact.force; }
 
-Real Simulation::stable_time_step() const { return impl_->stable_time_step(); }
+Real Simulation::stable_time_step() const { return mpm::stable_time_step(state_, *context_); }
 
 Real Simulation::next_time_step() const {
   const Real stable = stable_time_step();
@@ -212,9 +213,9 @@ Real Simulation::next_time_step() const {
     const Real limit = stable / settings_.cfl;
     if (settings_.fixed_time_step > limit) {
       std::ostringstream msg;
-      msg << "step " << diagnostics_.step + 1 << " (t = " << diagnostics_.time << " s): the fixed time step "
+      msg << "step " << state_.diagnostics.step + 1 << " (t = " << state_.diagnostics.time << " s): the fixed time step "
           << settings_.fixed_time_step << " s exceeds the stable limit "
-          << (impl_->penalty_contact ? "2/sqrt((2(c+|v|)/h)^2 + contact stiffness/point mass)" : "h/(c+|v|)")
+          << (context_->penalty_contact ? "2/sqrt((2(c+|v|)/h)^2 + contact stiffness/point mass)" : "h/(c+|v|)")
           << " = " << limit
           << " s; use a smaller time step or the automatic one";
       throw NumericalError(msg.str());
@@ -226,50 +227,45 @@ Real Simulation::next_time_step() const {
 
 const StepDiagnostics& Simulation::step() {
   advance(next_time_step());
-  return diagnostics_;
+  return state_.diagnostics;
 }
 
 void Simulation::run_until(Real end_time) {
-  while (diagnostics_.time < end_time * (1 - 1e-12)) {
-    const Real dt = std::min(next_time_step(), end_time - diagnostics_.time);
+  while (state_.diagnostics.time < end_time * (1 - 1e-12)) {
+    const Real dt = std::min(next_time_step(), end_time - state_.diagnostics.time);
     advance(dt);
   }
 }
 
 void Simulation::advance(Real dt) {
-  auto& im = *impl_;
-  const Real stable = im.stable_time_step();
-  im.arena.execute([&] {
-    im.with_solver_shape([&](auto shape) {
-      using Shape = decltype(shape);
-      switch (settings_.scheme) {
-        case UpdateScheme::usl: im.step_usl<Shape>(dt); break;
-        case UpdateScheme::usf: im.step_usf<Shape>(dt); break;
-        case UpdateScheme::musl: im.step_musl<Shape>(dt); break;
-      }
-    });
-  });
+  if (context_->refresh_needed) refresh_carried(state_, *context_);
+  const Real stable = mpm::stable_time_step(state_, *context_);
+  step_scheme(state_, *context_, dt);
   finish_step(dt, stable);
 }
 
 void Simulation::finish_step(Real dt, Real stable) {
-  auto& im = *impl_;
-  StepDiagnostics& d = diagnostics_;
+  StepContext& c = *context_;
+  CarriedState& carried = state_.carried;
+  StepDiagnostics& d = state_.diagnostics;
   d.step += 1;
   d.time += dt;
   d.dt = dt;
   d.stable_dt = stable;
   for (size_t b = 0; b < bodies_.size(); ++b)
-    if (bodies_[b].role == BodyRole::deformable) d.body_displacement[b] = im.centre_of_mass(b) - im.initial_centre[b];
+    if (bodies_[b].role == BodyRole::deformable) d.body_displacement[b] = centre_of_mass(state_, c, b) - carried.initial_centre[b];
   // The boundaries' work, motion and energy (boundary.hpp), in their order.
   BoundaryLedger ledger;
-  ledger.external_power = im.sums.gravity_power;
-  ledger.prescribed_work = driven_rigid_work_;
+  ledger.external_power = c.sums.gravity_power;
+  ledger.prescribed_work = state_.carried.driven_rigid_work;
   std::vector<Real> contact_power_end;
-  if (im.penalty_contact) contact_power_end = contact_power(particles_, im.contact);
-  BoundaryPass pass = im.boundary_pass(dt);
+  if (c.penalty_contact) {
+    contact_power_end = contact_power(state_.particles, c.contact);
+    for (Real& power : contact_power_end) power = c.domain.reduce_sum(power);
+  }
+  BoundaryPass pass = boundary_pass(state_, c, dt);
   pass.contact_power_end = &contact_power_end;
-  for (auto& b : boundaries_) {
+  for (auto& b : state_.boundaries) {
     std::visit([&](auto& boundary) { boundary.advance(pass, ledger); }, b);
     if (const auto* point = std::get_if<PointBoundary>(&b)) {
       d.reaction[point->body] = point->reaction;
@@ -277,22 +273,21 @@ void Simulation::finish_step(Real dt, Real stable) {
     }
   }
   refresh_rigid_states();
-  driven_rigid_work_ = ledger.prescribed_work;
+  state_.carried.driven_rigid_work = ledger.prescribed_work;
   d.rigid_energy = ledger.energy;
   d.external_work += dt * ledger.external_power;
   d.constraint_work += dt * ledger.constraint_power;
-  d.gravity_work += dt * im.sums.gravity_power;
-  d.kinetic_energy = im.sums.kinetic;
-  d.strain_energy = im.sums.strain;
-  d.record_force = im.sums.record_volume > 0 ? record_area_ * im.sums.record_stress_volume / im.sums.record_volume : 0;
-  d.max_speed = std::sqrt(im.sums.max_speed_sq);
+  d.gravity_work += dt * c.sums.gravity_power;
+  d.kinetic_energy = c.sums.kinetic;
+  d.strain_energy = c.sums.strain;
+  d.max_speed = std::sqrt(c.sums.max_speed_sq);
 
-  im.max_speed = std::max(d.max_speed, ledger.max_speed);
-  d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - im.initial_energy - initial_rigid_energy_ -
-                   d.constraint_work - d.gravity_work - driven_rigid_work_;
-  if (im.sums.max_wave_speed_sq > 0) im.max_wave_speed = std::sqrt(im.sums.max_wave_speed_sq);
+  carried.max_speed = std::max(d.max_speed, ledger.max_speed);
+  d.energy_error = d.kinetic_energy + d.strain_energy + d.rigid_energy - carried.initial_energy - state_.carried.initial_rigid_energy -
+                   d.constraint_work - d.gravity_work - state_.carried.driven_rigid_work;
+  if (c.sums.max_wave_speed_sq > 0) carried.max_wave_speed = std::sqrt(c.sums.max_wave_speed_sq);
 
-  const Real budget = std::max(im.initial_energy + d.external_work, Real(0));
+  const Real budget = std::max(carried.initial_energy + d.external_work, Real(0));
   if (d.kinetic_energy > settings_.runaway_energy_factor * budget + settings_.runaway_energy_floor) {
     std::ostringstream msg;
     msg << "step " << d.step << " (t = " << d.time << " s): runaway kinetic energy " << d.kinetic_energy
@@ -303,14 +298,14 @@ void Simulation::finish_step(Real dt, Real stable) {
   for (const auto& observer : observers_) observer(*this, d);
 }
 
-size_t Simulation::active_grid_blocks() const { return impl_->grid.block_count(); }
+size_t Simulation::active_grid_blocks() const { return state_.grid.block_count(); }
 size_t Simulation::grid_memory_bytes() const {
   // DDMP on the grid: its nodal σ^d / L and per-block tables beside the lanes (ddmp_grid.hpp).
-  const DdmpNodalValues& d = impl_->ddmp_nodal;
-  return impl_->grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
+  const DdmpNodalValues& d = context_->ddmp_nodal;
+  return state_.grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
          d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.coefficients.capacity() * sizeof(Real) + d.block_has_small.capacity();
 }
 
-size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(particles_); }
+size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(state_.particles); }
 
 }  // namespace latmpm::mpm

@@ -24,6 +24,7 @@
 #include "mpm/particles.hpp"
 #include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
+#include "mpm/solver_state.hpp"
 
 namespace latmpm {
 struct PointSet;
@@ -32,8 +33,7 @@ class Hdf5File;
 
 namespace latmpm::mpm {
 
-class SparseGrid;
-class ParallelContext;
+struct StepContext;
 
 class Simulation {
  public:
@@ -58,10 +58,10 @@ class Simulation {
   void add_rigid_body(const RigidBodySettings& body);
   const std::vector<RigidBodySettings>& rigid_bodies() const { return rigid_bodies_; }
   // The rigid bodies' states now (their boundaries', in rigid_bodies() order).
-  const std::vector<RigidBodyState>& rigid_states() const { return diagnostics_.rigid; }
+  const std::vector<RigidBodyState>& rigid_states() const { return state_.diagnostics.rigid; }
   // Every boundary of the model (boundary.hpp): point-defined ones in body order, then the
   // geometric rigid bodies in the order they were added.
-  const std::vector<Boundary>& boundaries() const { return boundaries_; }
+  const std::vector<Boundary>& boundaries() const { return state_.boundaries; }
   // What the series shows of each boundary, in boundaries() order.
   std::vector<BoundaryReport> boundary_reports() const;
   // Per point, in particles() order: the penalty contact force of the last step (N,
@@ -73,48 +73,21 @@ class Simulation {
   Real next_time_step() const;
   Real stable_time_step() const;  // cfl · h / max_p(c_p + |v_p|), s
 
-  const Particles& particles() const { return particles_; }
+  const Particles& particles() const { return state_.particles; }
   const std::vector<BodySettings>& bodies() const { return bodies_; }
   const Settings& settings() const { return settings_; }
-  const StepDiagnostics& last_diagnostics() const { return diagnostics_; }
-  Real time() const { return diagnostics_.time; }
-  int64_t step_count() const { return diagnostics_.step; }
+  const StepDiagnostics& last_diagnostics() const { return state_.diagnostics; }
+  Real time() const { return state_.diagnostics.time; }
+  int64_t step_count() const { return state_.diagnostics.step; }
   // Blocks of grid nodes allocated now (each 4×4×4 nodes), and their memory in bytes.
   size_t active_grid_blocks() const;
   size_t grid_memory_bytes() const;
   size_t particle_memory_bytes() const;
 
-  // Record-layer area A (m²) used for Diagnostics::record_force; 0 without record points.
+  // Record-layer area A (m²) of the RecordLayerForce observer (observers.hpp); 0 without
+  // record points.
   Real record_area() const { return record_area_; }
 
-  // --- The stages of a step, public so tests can check each transfer on its own. ---
-  struct GridTotals {
-    Real mass = 0;           // Σ m_i, kg
-    Vec3 momentum = Vec3::Zero();  // Σ p_i (or Σ m_i v_i after a grid update), kg m/s
-  };
-  // Resets the grid and maps mass and momentum (and internal force) of the particles to it.
-  void stage_particles_to_grid();
-  // Grid velocities from momentum (and force × dt), with boundary conditions.
-  void stage_grid_update(Real dt);
-  // Sets every grid node's new velocity to field(x_i) and its old velocity to zero
-  // (for patch tests of the gather).
-  void stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>& field);
-  // Grid to particles: velocity, position, F and stress, with the current settings.
-  void stage_grid_to_particles(Real dt);
-  GridTotals grid_totals() const;
-  // Interpolates the grid's new velocity to every particle without changing any state:
-  // v_p = Σ S_ip v_i (m/s) and L_p = Σ v_i ⊗ ∇S_ip (1/s).
-  struct Gathered {
-    std::vector<Vec3> velocity;
-    std::vector<Mat3> velocity_gradient;
-  };
-  Gathered gather_from_grid() const;
-  // Every node of the active grid with its 8 lanes (sparse_grid.hpp), block by block.
-  struct GridNode {
-    std::array<int, 3> index;
-    std::array<Real, 8> lanes;
-  };
-  std::vector<GridNode> grid_nodes() const;
   // Checkpoints (simulation_state.cpp): everything a continued run needs to give the same
   // results bit for bit — particles in their internal order with their buckets, time, step,
   // diagnostics and accumulated work, rigid-body state, the carried stable-step inputs —
@@ -123,27 +96,29 @@ class Simulation {
   void save_state(Hdf5File& file, const std::string& group) const;
   void load_state(const Hdf5File& file, const std::string& group);
 
-  // Mutable access for tests and set-up (initial velocities); call before the first step.
-  // Velocities, positions and stresses set here are taken as the initial state.
+  // Set-up of the initial state (initial velocities, prestress); call before the first
+  // step. Velocities, positions and stresses set here are taken as the initial state.
   Particles& mutable_particles();
 
+  // The state the step works on (solver_state.hpp): particles, grid, boundaries, time.
+  const SolverState& state() const { return state_; }
+
  private:
-  struct Impl;
+  // Single stages of a step for the transfer tests (simulation_test_access.hpp).
+  friend class SimulationTestAccess;
   void advance(Real dt);
   void check_body_speed(Real speed, const std::string& where, const std::string& field) const;
   void finish_step(Real dt, Real stable_dt);
-  std::unique_ptr<Impl> impl_;
-  Particles particles_;
+  void refresh_rigid_states();  // state_.diagnostics.rigid from the boundaries
+  // The run's configuration, rebuilt from the scene (never saved).
   std::vector<BodySettings> bodies_;
   Settings settings_;
-  StepDiagnostics diagnostics_;
+  std::vector<RigidBodySettings> rigid_bodies_;  // as added (their state: in state_.boundaries)
   std::vector<Observer> observers_;
   Real record_area_ = 0;
-  std::vector<RigidBodySettings> rigid_bodies_;  // as added (their state: in boundaries_)
-  std::vector<Boundary> boundaries_;
-  void refresh_rigid_states();  // diagnostics_.rigid from the boundaries
-  Real initial_rigid_energy_ = 0;  // J, Σ kinetic + potential of free rigid bodies at the start
-  Real driven_rigid_work_ = 0;     // J, work of driven and fixed rigid bodies on the model so far
+  // What a continued run needs (save_state), and the stepping machinery.
+  SolverState state_;
+  std::unique_ptr<StepContext> context_;
 };
 
 }  // namespace latmpm::mpm

@@ -2,25 +2,24 @@
 // checkpoint_io.hpp. The particles are stored in their internal (bucket-sorted) order
 // together with the buckets and runs, so a restored run scatters and gathers in exactly the
 // order the uninterrupted one would: results agree bit for bit (the thread count does not
-// matter, simulation_impl.hpp). Every particle field comes from the registry
+// matter, step_stages.hpp). Every particle field comes from the registry
 // (particle_fields.hpp).
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "mpm/checkpoint_io.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/simulation.hpp"
-#include "mpm/simulation_impl.hpp"
+#include "mpm/step_stages.hpp"
 
 namespace latmpm::mpm {
 
 namespace {
 // The step's diagnostics and the carried solver scalars, by name (both directions).
-template <class D, class Im, class R, class Visit>
-void for_each_solver_scalar(D& d, Im& im, R& initial_rigid_energy, R& driven_rigid_work, Visit&& visit) {
+template <class D, class C, class Visit>
+void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
   visit("time", d.time);
   visit("dt", d.dt);
   visit("stable_dt", d.stable_dt);
-  visit("record_force", d.record_force);
   visit("kinetic_energy", d.kinetic_energy);
   visit("strain_energy", d.strain_energy);
   visit("external_work", d.external_work);
@@ -29,11 +28,11 @@ void for_each_solver_scalar(D& d, Im& im, R& initial_rigid_energy, R& driven_rig
   visit("gravity_work", d.gravity_work);
   visit("rigid_energy", d.rigid_energy);
   visit("energy_error", d.energy_error);
-  visit("carried_max_speed", im.max_speed);
-  visit("carried_max_wave_speed", im.max_wave_speed);
-  visit("initial_energy", im.initial_energy);
-  visit("initial_rigid_energy", initial_rigid_energy);
-  visit("driven_rigid_work", driven_rigid_work);
+  visit("carried_max_speed", carried.max_speed);
+  visit("carried_max_wave_speed", carried.max_wave_speed);
+  visit("initial_energy", carried.initial_energy);
+  visit("initial_rigid_energy", carried.initial_rigid_energy);
+  visit("driven_rigid_work", carried.driven_rigid_work);
 }
 
 std::vector<std::string> names_of(const std::vector<BodySettings>& bodies) {
@@ -54,31 +53,29 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
   if (!rigid_bodies_.empty()) out.strings("rigid_bodies", names_of(rigid_bodies_));
 
   CheckpointWriter particles = out.sub("particles");
-  for_each_particle_field(particles_, [&](const ParticleField& field, const auto& values, const auto&) {
+  for_each_particle_field(state_.particles, [&](const ParticleField& field, const auto& values, const auto&) {
     if (!(field.optional && values.empty())) particles.rows(field.name, values);
   });
 
-  const auto& im = *impl_;
   std::vector<int64_t> buckets, runs;
-  for (const auto& b : im.buckets.buckets())
+  for (const auto& b : state_.buckets.buckets())
     buckets.insert(buckets.end(), {b.coord[0], b.coord[1], b.coord[2], b.begin, b.end, b.run_begin, b.run_end});
-  for (const auto& r : im.buckets.runs()) runs.insert(runs.end(), {r.body, r.begin, r.end});
+  for (const auto& r : state_.buckets.runs()) runs.insert(runs.end(), {r.body, r.begin, r.end});
   CheckpointWriter sorting = out.sub("buckets");
   sorting.integers("buckets", buckets, 7);
   sorting.integers("runs", runs, 3);
-  sorting.integer("needs_sort", im.needs_sort);
+  sorting.integer("needs_sort", state_.needs_sort);
 
   CheckpointWriter solver = out.sub("solver");
-  const StepDiagnostics& d = diagnostics_;
+  const StepDiagnostics& d = state_.diagnostics;
   solver.integer("step", d.step);
-  for_each_solver_scalar(d, im, initial_rigid_energy_, driven_rigid_work_,
-                         [&](const char* name, Real value) { solver.scalar(name, value); });
+  for_each_solver_scalar(d, state_.carried, [&](const char* name, Real value) { solver.scalar(name, value); });
   solver.rows("body_displacement", d.body_displacement);
   solver.rows("reaction", d.reaction);
-  solver.rows("initial_centre", im.initial_centre);
+  solver.rows("initial_centre", state_.carried.initial_centre);
 
   CheckpointWriter boundaries = out.sub("boundaries");
-  for (const auto& b : boundaries_) {
+  for (const auto& b : state_.boundaries) {
     CheckpointWriter own = boundaries.sub(checkpoint_name(b));
     std::visit([&](const auto& boundary) { boundary.save(own); }, b);
   }
@@ -86,8 +83,7 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   const CheckpointReader in(f, g);
-  auto& im = *impl_;
-  const size_t n = particles_.size();
+  const size_t n = state_.particles.size();
   if (in.strings("bodies") != names_of(bodies_))
     throw InputError(f.path(), g + "/bodies", "the checkpoint's bodies differ from the scene's (another scene?)");
   const auto rigid_names = names_of(rigid_bodies_);
@@ -97,7 +93,7 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   // Everything is read and checked before anything is changed: a refused checkpoint leaves
   // the simulation as it was.
   const CheckpointReader particles_in = in.sub("particles");
-  Particles p = particles_;
+  Particles p = state_.particles;
   for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
     if (field.optional && values.empty()) return;  // the scene's run does not use it
     if (field.optional && !particles_in.has(field.name))
@@ -122,35 +118,29 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
 
   const CheckpointReader solver = in.sub("solver");
   const size_t nb = bodies_.size();
-  StepDiagnostics d = diagnostics_;
+  StepDiagnostics d = state_.diagnostics;
   d.step = solver.integer("step");
-  struct Carried {
-    Real max_speed = 0, max_wave_speed = 0, initial_energy = 0;
-  } carried;
-  Real initial_rigid_energy = 0, driven_rigid_work = 0;
-  for_each_solver_scalar(d, carried, initial_rigid_energy, driven_rigid_work,
-                         [&](const char* name, Real& value) { value = solver.scalar(name); });
+  CarriedState carried;
+  for_each_solver_scalar(d, carried, [&](const char* name, Real& value) { value = solver.scalar(name); });
   d.body_displacement = solver.rows<Vec3>("body_displacement", nb);
   d.reaction = solver.rows<Vec3>("reaction", nb);
-  auto initial_centre = solver.rows<Vec3>("initial_centre", nb);
+  carried.initial_centre = solver.rows<Vec3>("initial_centre", nb);
 
   const CheckpointReader boundaries_in = in.sub("boundaries");
-  std::vector<Boundary> boundaries = boundaries_;
+  std::vector<Boundary> boundaries = state_.boundaries;
   for (auto& boundary_slot : boundaries) {
     const CheckpointReader own = boundaries_in.sub(checkpoint_name(boundary_slot));
     std::visit([&](auto& boundary) { boundary.load(own); }, boundary_slot);
   }
 
-  particles_ = std::move(p);
-  im.buckets.restore(std::move(buckets), std::move(runs));
-  im.needs_sort = needs_sort;
-  if (!im.needs_sort) im.compute_boxes_from_positions();
-  im.max_speed = carried.max_speed, im.max_wave_speed = carried.max_wave_speed, im.initial_energy = carried.initial_energy;
-  im.initial_centre = std::move(initial_centre);
-  im.refresh_needed = false;
-  initial_rigid_energy_ = initial_rigid_energy, driven_rigid_work_ = driven_rigid_work;
-  boundaries_ = std::move(boundaries);
-  diagnostics_ = std::move(d);
+  state_.particles = std::move(p);
+  state_.buckets.restore(std::move(buckets), std::move(runs));
+  state_.needs_sort = needs_sort;
+  if (!state_.needs_sort) compute_boxes_from_positions(state_, *context_);
+  state_.carried = std::move(carried);
+  context_->refresh_needed = false;
+  state_.boundaries = std::move(boundaries);
+  state_.diagnostics = std::move(d);
   refresh_rigid_states();
 }
 

@@ -59,7 +59,6 @@ enum class ParticleFault { none, not_finite, inverted, left_grid };
 // Per-bucket sums of one gather pass (summed over buckets in order: deterministic).
 struct BucketTally {
   Real kinetic = 0, strain = 0, gravity_power = 0;
-  Real record_stress_volume = 0, record_volume = 0;
   Real max_speed_sq = 0;  // m²/s²
   Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
@@ -317,7 +316,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   };
 
   // Sums of the bucket, one lane per particle slot of a group, added up at the end.
-  Pack kinetic{}, strain{}, gravity_power{}, record_stress_volume{}, record_volume_sum{};
+  Pack kinetic{}, strain{}, gravity_power{};
   for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
     const BodyRun& run = runs[run_index - b.run_begin];
     const BodyInfo& body = bodies[run.body];
@@ -349,7 +348,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             //    interpolation so the lane-by-lane stores have long landed when the packs
             //    are read back as vectors. Idle lanes (q ≥ n) hold zero mass and volume,
             //    F = I and σ = 0: they add nothing to any sum.
-            Pack m{}, v[3] = {}, f_old[3][3], s[6] = {}, volume0{}, record{};
+            Pack m{}, v[3] = {}, f_old[3][3], s[6] = {}, volume0{};
             Pack history[history_count > 0 ? history_count : 1] = {};
             for (int r = 0; r < 3; ++r)
               for (int c = 0; c < 3; ++c) f_old[r][c] = Pack{} + (r == c ? Real(1) : Real(0));
@@ -364,7 +363,6 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
                 for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
                 volume0[q] = ps.volume0[p];
-                record[q] = (ps.flags[p] & Particles::record_flag) ? Real(1) : Real(0);
                 for (size_t k = 0; k < history_count; ++k) history[k][q] = history_column[k][p];
               }
             }
@@ -430,15 +428,10 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 for (int c = 0; c < 3; ++c)
                   F[r][c] = f_old[r][c] + dt * (grad_v[r][0] * f_old[0][c] + grad_v[r][1] * f_old[1][c] +
                                                 grad_v[r][2] * f_old[2][c]);
-              d.jacobian = F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) -
-                           F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
-                           F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
+              d.jacobian = determinant(F);
               update_material_stress(material, d, s, history);
               const Pack energy = volume0 * material_energy_density(material, d, s, history);
               strain += energy;
-              const Pack record_volume = record * d.jacobian * volume0;
-              record_stress_volume += s[2] * record_volume;
-              record_volume_sum += record_volume;
               for (int q = 0; q < n; ++q) {
                 const uint32_t p = g0 + uint32_t(q);
                 const Real J = d.jacobian[q];
@@ -464,8 +457,6 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     tally.kinetic += kinetic[q];
     tally.strain += strain[q];
     tally.gravity_power += gravity_power[q];
-    tally.record_stress_volume += record_stress_volume[q];
-    tally.record_volume += record_volume_sum[q];
   }
 }
 

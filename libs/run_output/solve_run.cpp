@@ -52,6 +52,8 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
   for (size_t b = 0; b < count.size(); ++b)
     points_summary_ += "body " + points.body_names[b] + " (" + to_string(scene_.bodies[b].role) +
                        "): " + std::to_string(count[b]) + " points\n";
+  for (const BodySpec& b : scene_.omitted_bodies)
+    points_summary_ += "body " + b.name + " (omitted): its points are not simulated\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
                                                   solver_settings(scene_, options_.threads), scene_.where);
   for (const auto& r : solver_rigid_bodies(scene_)) {
@@ -141,7 +143,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
            format_number("%g", axis.z()) + "), record area " + format_number("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
-  const auto columns = solver_series_columns(has_flyer(sim));
+  const SolverSeries series_row(sim, axis);
+  const auto columns = series_row.columns();
   std::vector<std::vector<double>> earlier_rows;
   if (options_.resume) {
     // The rows up to the checkpoint that the regular schedule wrote (not a final row of a
@@ -161,7 +164,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
                       : std::make_unique<SnapshotWriter>(run_dir, provenance_);
   SnapshotWriter& snapshots = *snapshot_writer;
   if (!options_.resume) {
-    series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
+    series.append(series_row.row(sim, sim.last_diagnostics()));
     snapshots.write(solver_snapshot(sim));
   }
   series.save();
@@ -225,16 +228,20 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     return "step " + std::to_string(sim.step_count()) + ", t = " + format_number("%.4g", sim.time()) + " s, " +
            format_number("%.3g", rate()) + " particle-updates/s";
   };
+  // The outputs as observers, in this order after every step: series row, snapshot, then
+  // progress, checkpoint and log.
   sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
-    if (d.step % scene_.series_every == 0) {
-      series.append(solver_series_row(s, d, axis));
-      last_row_step = d.step;
-    }
-    if (scene_.snapshot_every > 0 && d.step % scene_.snapshot_every == 0) {
-      snapshots.write(solver_snapshot(s));
-      series.save();
-      last_snapshot_step = d.step;
-    }
+    if (d.step % scene_.series_every != 0) return;
+    series.append(series_row.row(s, d));
+    last_row_step = d.step;
+  });
+  sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
+    if (!(scene_.snapshot_every > 0 && d.step % scene_.snapshot_every == 0)) return;
+    snapshots.write(solver_snapshot(s));
+    series.save();
+    last_snapshot_step = d.step;
+  });
+  sim.add_observer([&](const mpm::Simulation&, const mpm::StepDiagnostics& d) {
     progress.update(d.time, status_text());
     const double wall = seconds_since(start);
     if ((scene_.checkpoint.every_steps > 0 && d.step % scene_.checkpoint.every_steps == 0) ||
@@ -295,7 +302,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   }
 
   // 4. The final state, then the summary.
-  if (last_row_step != sim.step_count()) series.append(solver_series_row(sim, sim.last_diagnostics(), axis));
+  if (last_row_step != sim.step_count()) series.append(series_row.row(sim, sim.last_diagnostics()));
   if (last_snapshot_step != sim.step_count()) snapshots.write(solver_snapshot(sim));
   series.save();
   result.steps = sim.step_count();

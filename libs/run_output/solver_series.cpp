@@ -42,8 +42,8 @@ bool has_flyer(const mpm::Simulation& sim) {
   return false;
 }
 
-std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
-                                      const Eigen::Vector3d& axis) {
+std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d) const {
+  const Eigen::Vector3d& axis = axis_;
   // One pass over the boundaries (point-defined ones first, then the rigid bodies): driven
   // ones load the specimen and the first gives the displacement, fixed ones and held points
   // hold it up, free ones are flyers.
@@ -69,7 +69,7 @@ std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::Ste
   }
   std::vector<double> row = {double(d.step),   d.time,           d.dt,
                              displacement,     load_driven,      load_fixed,
-                             0.0 - d.record_force,  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
+                             0.0 - record_(sim),  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
                              d.external_work,  d.max_speed,      d.constraint_work,
                              d.gravity_work,   d.energy_error};
   if (flyer)

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "mpm/observers.hpp"
 #include "mpm/simulation.hpp"
 #include "run_output/particle_snapshot.hpp"
 #include "run_output/series_writer.hpp"
@@ -28,8 +29,22 @@ namespace latmpm {
 std::vector<SeriesColumn> solver_series_columns(bool with_flyer = false);
 // Whether the simulation has a free rigid body (the flyer columns are written).
 bool has_flyer(const mpm::Simulation& sim);
-std::vector<double> solver_series_row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d,
-                                      const Eigen::Vector3d& axis);
+
+// The series row as observers of the state after a step, column group by column group: the
+// step's time and energies (StepDiagnostics), the boundaries' travel and loads (one pass over
+// Simulation::boundary_reports()), the record layer (mpm::RecordLayerForce).
+class SolverSeries {
+ public:
+  SolverSeries(const mpm::Simulation& sim, const Eigen::Vector3d& axis)
+      : axis_(axis), record_(sim), with_flyer_(has_flyer(sim)) {}
+  std::vector<SeriesColumn> columns() const { return solver_series_columns(with_flyer_); }
+  std::vector<double> row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d) const;
+
+ private:
+  Eigen::Vector3d axis_;
+  mpm::RecordLayerForce record_;
+  bool with_flyer_;
+};
 
 // The particles in their original point order (the solver re-sorts them), SI.
 ParticleSnapshot solver_snapshot(const mpm::Simulation& sim);

@@ -79,6 +79,12 @@ struct BodySpec {
   std::string hold_tag;
   bool hold_slip = false;  // hold.slip: only the velocity normal to the held face is zero
   std::string hold_where;  // location of the hold.tag key
+  // `trim = { point = [...], normal = [...] }`: the body's points beyond this plane,
+  // (x − point)·normal > 0, are dropped when the point files are read — e.g. a printed plate
+  // kept deformable only in a slice next to the specimen, a rigid half-space on the slice
+  // standing for the rest (docs/scene.md). trim_normal zero: no trim.
+  Eigen::Vector3d trim_point = Eigen::Vector3d::Zero(), trim_normal = Eigen::Vector3d::Zero();  // m, unit
+  std::string trim_where;  // location of the trim.point key
   std::string where;  // "scene.toml:14", for messages about this body
 };
 
@@ -103,6 +109,7 @@ struct SolverSpec {
   std::string linear_solver = "cholmod";  // static: "cholmod", "ldlt" or "cg"
   double tolerance = 1e-8;              // static: relative residual force of each increment
   bool check_stability = true;          // static: end the path at the first unstable equilibrium
+  double stabilisation = 0.1;           // static: β of the affine stabilisation (× shear modulus)
   std::string where;
 };
 
@@ -129,6 +136,10 @@ struct Scene {
 
   std::vector<PointFileSpec> point_files;
   std::vector<BodySpec> bodies;  // in document order
+  // Bodies of the point files that the scene leaves out (role = "omitted"): their points are
+  // dropped when the files are read, e.g. printed plates that [rigid_bodies] model as
+  // geometry instead (docs/scene.md). Name order; `where` names their role key.
+  std::vector<BodySpec> omitted_bodies;
   std::vector<RigidBodySpec> rigid_bodies;  // in document order
   CheckpointSpec checkpoint;
 

@@ -7,18 +7,32 @@
 namespace latmpm {
 namespace {
 
-// Appends `part` to `all`, renumbering its bodies into the scene's order.
-void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& body_map) {
-  const size_t before = all.size(), n = part.size();
-  all.position.insert(all.position.end(), part.position.begin(), part.position.end());
-  all.volume.insert(all.volume.end(), part.volume.begin(), part.volume.end());
-  all.half_size.insert(all.half_size.end(), part.half_size.begin(), part.half_size.end());
-  for (int32_t b : part.body) all.body.push_back(body_map[b]);
-  for (auto& [name, mask] : all.tags) mask.resize(before + n, 0);
+// Whether the scene keeps a point of its body `body` at x: not beyond the body's trim plane.
+bool kept_by_trim(const BodySpec& body, const Eigen::Vector3d& x) {
+  return body.trim_normal.isZero() || (x - body.trim_point).dot(body.trim_normal) <= 0;
+}
+
+// Appends the points of `part` that the scene simulates to `all`, renumbering their bodies
+// into the scene's order (body_map: -1 for an omitted body, whose points are dropped, as are
+// those beyond their body's trim plane).
+void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& body_map, const Scene& scene) {
+  const size_t before = all.size();
+  std::vector<size_t> kept;
+  for (size_t p = 0; p < part.size(); ++p) {
+    const int32_t b = body_map[part.body[p]];
+    if (b >= 0 && kept_by_trim(scene.bodies[size_t(b)], part.position[p])) kept.push_back(p);
+  }
+  for (size_t p : kept) {
+    all.position.push_back(part.position[p]);
+    all.volume.push_back(part.volume[p]);
+    all.half_size.push_back(part.half_size[p]);
+    all.body.push_back(body_map[part.body[p]]);
+  }
+  for (auto& [name, mask] : all.tags) mask.resize(before + kept.size(), 0);
   for (const auto& [name, mask] : part.tags) {
     auto& merged = all.tags[name];
     merged.resize(before, 0);
-    merged.insert(merged.end(), mask.begin(), mask.end());
+    for (size_t p : kept) merged.push_back(mask[p]);
   }
   for (const auto& [key, value] : part.parameters) all.parameters.emplace(key, value);
 }
@@ -29,12 +43,19 @@ std::string list(const std::vector<std::string>& names) {
   return text.empty() ? "none" : text;
 }
 
+int omitted_index(const Scene& scene, const std::string& name) {
+  for (size_t b = 0; b < scene.omitted_bodies.size(); ++b)
+    if (scene.omitted_bodies[b].name == name) return int(b);
+  return -1;
+}
+
 }  // namespace
 
 PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
   PointSet all;
   for (const auto& body : scene.bodies) all.body_names.push_back(body.name);
   std::vector<bool> has_points(scene.bodies.size(), false);
+  std::vector<bool> has_omitted_points(scene.omitted_bodies.size(), false);
   std::vector<std::string> names_in_files;
 
   for (size_t f = 0; f < scene.point_files.size(); ++f) {
@@ -56,7 +77,9 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       const std::string& name = part.body_names[b];
       names_in_files.push_back(name);
       int index = all.body_index(name);
-      if (index < 0 && count[b] > 0)
+      const bool omitted = omitted_index(scene, name) >= 0;
+      if (omitted && count[b] > 0) has_omitted_points[size_t(omitted_index(scene, name))] = true;
+      if (index < 0 && !omitted && count[b] > 0)
         throw InputError(spec.where, field,
                          "'" + spec.path + "' holds body '" + name + "' (" + std::to_string(count[b]) +
                              " points) which the scene does not describe; add [bodies." + name + "]");
@@ -67,13 +90,18 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       all.cell_size = part.cell_size;
       all.ppc = part.ppc;
     }
-    append(all, part, body_map);
+    append(all, part, body_map, scene);
   }
   for (size_t b = 0; b < scene.bodies.size(); ++b)
     if (!has_points[b])
       throw InputError(scene.bodies[b].where, "bodies." + scene.bodies[b].name,
                        "no point file holds a body named '" + scene.bodies[b].name +
                            "' (the files hold: " + list(names_in_files) + ")");
+  for (size_t b = 0; b < scene.omitted_bodies.size(); ++b)
+    if (!has_omitted_points[b])
+      throw InputError(scene.omitted_bodies[b].where, "bodies." + scene.omitted_bodies[b].name,
+                       "no point file holds a body named '" + scene.omitted_bodies[b].name +
+                           "' to omit (the files hold: " + list(names_in_files) + ")");
   // A held layer must exist: a misspelt tag would otherwise leave the body free.
   for (size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodySpec& body = scene.bodies[b];

@@ -34,6 +34,8 @@ constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKi
                                     ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp};
 constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
 constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean, MaterialModel::j2};
+// A body of the point files that the scene leaves out (Scene::omitted_bodies).
+const std::string omitted_role = "omitted";
 const std::vector<std::string> rigid_motions = {"driven", "free", "fixed"};
 const std::vector<std::string> rigid_shapes = {"box", "half_space"};
 const std::vector<std::string> rigid_contacts = {"no_slip", "penalty"};
@@ -140,7 +142,15 @@ void read_bodies(TableReader bodies, Scene& s) {
     BodySpec body;
     body.name = name;
     body.where = b.where("role");
-    body.role = enum_from(b.choice("role", names_of(all_roles), ""), all_roles);
+    std::vector<std::string> roles = names_of(all_roles);
+    roles.push_back(omitted_role);
+    const std::string role = b.choice("role", roles, "");
+    if (role == omitted_role) {  // no other key: nothing of it is simulated
+      b.finish();
+      s.omitted_bodies.push_back(body);
+      continue;
+    }
+    body.role = enum_from(role, all_roles);
     if (body.role == BodyRole::deformable || b.has("material")) {
       body.material = read_material(b.table("material"));
       body.has_material = true;
@@ -161,6 +171,14 @@ void read_bodies(TableReader bodies, Scene& s) {
       if (body.hold_tag.empty()) hold->fail("tag", "must name a point tag");
       body.hold_slip = hold->boolean("slip", false);
       hold->finish();
+    }
+    if (auto trim = b.optional_table("trim")) {
+      body.trim_where = trim->where("point");
+      body.trim_point = trim->vector("point", dimension::length);
+      body.trim_normal = trim->vector("normal", dimension::none);
+      if (!(body.trim_normal.norm() > 0)) trim->fail("normal", "must be a non-zero direction (toward the points to drop)");
+      body.trim_normal.normalize();
+      trim->finish();
     }
     b.finish();
     s.bodies.push_back(body);
@@ -276,6 +294,8 @@ void read_solver(TableReader solver, Scene& s) {
     spec.tolerance = solver.number("tolerance", 1e-8);
     if (!(spec.tolerance > 0 && spec.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
     spec.check_stability = solver.boolean("check_stability", true);
+    spec.stabilisation = solver.number("stabilisation", 0.1);
+    if (!(spec.stabilisation >= 0 && spec.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
     if (s.end.kind != EndCondition::plate_displacement)
       solver.fail("kind", "a static solve needs run.end = { plate_displacement = \"...\" }");
   }

@@ -119,6 +119,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   out.loading.travel = scene.end.value;
   out.loading.increments = scene.solver.increments;
   out.loading.check_stability = scene.solver.check_stability;
+  out.problem->set_stabilisation(scene.solver.stabilisation);
   return out;
 }
 

@@ -96,7 +96,8 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   log.line("command: " + provenance.command_line);
   log.line("scene: " + scene.source + " (resolved copy: scene.toml)");
   log.line("static solve (paper C Sec. 3.3): projected Newton on the narrow band, linear solver " +
-           scene.solver.linear_solver + ", tolerance " + format_number("%g", scene.solver.tolerance));
+           scene.solver.linear_solver + ", tolerance " + format_number("%g", scene.solver.tolerance) +
+           ", affine stabilisation β " + format_number("%g", scene.solver.stabilisation));
   log.line("points: " + std::to_string(problem.point_count()) + " material, band nodes " +
            std::to_string(problem.band().node_count()) + " (" + std::to_string(problem.dof_count()) +
            " unknowns), support nodes " + std::to_string(sp.loading.support_nodes.size()) + ", platen nodes " +
@@ -136,6 +137,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   };
   statics::SparseSolver solver(solver_kind);
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
+  log.line("linear solver: " + solver.describe());
   series.save();
 
   StaticSolveSummary s;

@@ -97,4 +97,51 @@ void BandMatrix::assemble(const std::function<void(size_t, Mat9&)>& tangent) {
   });
 }
 
+std::vector<Real> BandMatrix::assemble_blocks(const StencilRow& row) const {
+  const NarrowBand& band = band_;
+  const int reach = band.nodes_per_axis - 1, slots = span_ * span_ * span_;
+  std::vector<Real> blocks(size_t(neighbor_offset_[band.node_count()]), Real(0));
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, band.node_count(), 64), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<Real> values;
+    for (size_t n = r.begin(); n < r.end(); ++n) {
+      const int* slot = slot_position_.data() + n * slots;
+      Real* column = blocks.data() + neighbor_offset_[n];
+      for (uint32_t k = band.node_entry_offset[n]; k < band.node_entry_offset[n + 1]; ++k) {
+        const uint32_t own = band.node_entry[k], p = band.entry_point[own];
+        const uint32_t first = band.point_offset[p], count = band.point_offset[p + 1] - first;
+        values.resize(count);
+        row(p, own, values.data());
+        for (uint32_t e = 0; e < count; ++e)
+          column[slot[slot_of(band.node[band.entry_node[first + e]] - band.node[n], reach, span_)]] += values[e];
+      }
+    }
+  });
+  return blocks;
+}
+
+void BandMatrix::add_blocks(const std::vector<Real>& blocks) {
+  Real* values = matrix_.valuePtr();
+  const int* outer = matrix_.outerIndexPtr();
+  tbb::parallel_for(size_t(0), band_.node_count(), [&](size_t n) {
+    const int first = neighbor_offset_[n], degree = neighbor_offset_[n + 1] - first;
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < degree; ++k) values[outer[3 * n + a] + 3 * k + a] += blocks[size_t(first + k)];
+  });
+}
+
+void BandMatrix::multiply_blocks(const std::vector<Real>& blocks, const Eigen::Matrix<Real, Eigen::Dynamic, 1>& u,
+                                 Eigen::Matrix<Real, Eigen::Dynamic, 1>& f) const {
+  const int* outer = matrix_.outerIndexPtr();
+  const int* inner = matrix_.innerIndexPtr();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, band_.node_count(), 256), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t n = r.begin(); n < r.end(); ++n) {
+      const int first = neighbor_offset_[n], degree = neighbor_offset_[n + 1] - first;
+      Vec3 sum = Vec3::Zero();
+      for (int k = 0; k < degree; ++k)  // the block's node: the column's k-th row triplet
+        sum += blocks[size_t(first + k)] * u.segment<3>(inner[outer[3 * n] + 3 * k]);
+      f.segment<3>(Eigen::Index(3 * n)) += sum;
+    }
+  });
+}
+
 }  // namespace latmpm::statics

@@ -23,6 +23,17 @@ class BandMatrix {
 
   // K from the points' weighted tangents: tangent(p, A) writes V_p ∂P/∂F at point p (N·m).
   void assemble(const std::function<void(size_t, Mat9&)>& tangent);
+  // A scalar form over node pairs, one value per 3×3 block in the matrix's block order:
+  // B_ij = Σ_p M_p,ij with row(p, e, out) writing row `e` (a band entry of point p) of point
+  // p's stencil matrix, out[k] for the point's k-th entry. For quadratic forms acting alike
+  // on each displacement component (the affine stabilisation), K = B ⊗ I₃.
+  using StencilRow = std::function<void(size_t point, uint32_t entry, Real* row)>;
+  std::vector<Real> assemble_blocks(const StencilRow& row) const;
+  // K += B ⊗ I₃, and f += (B ⊗ I₃) u.
+  void add_blocks(const std::vector<Real>& blocks);
+  void multiply_blocks(const std::vector<Real>& blocks, const Eigen::Matrix<Real, Eigen::Dynamic, 1>& u,
+                       Eigen::Matrix<Real, Eigen::Dynamic, 1>& f) const;
+
   SparseMatrix& matrix() { return matrix_; }
   const SparseMatrix& matrix() const { return matrix_; }
 

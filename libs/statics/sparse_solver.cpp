@@ -1,12 +1,13 @@
 #include "statics/sparse_solver.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <array>
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
+#include "statics/cholmod_direct.hpp"
 
 namespace latmpm::statics {
 
@@ -30,7 +31,7 @@ LinearSolverKind parse_linear_solver(const std::string& name, const std::string&
 struct SparseSolver::Impl {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<Real>> cg;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
+  CholmodDirect cholmod;
   bool analysed = false;
   const SparseMatrix* matrix = nullptr;
 };
@@ -39,7 +40,6 @@ SparseSolver::SparseSolver(LinearSolverKind kind, Real cg_tolerance, int cg_max_
     : kind_(kind), impl_(std::make_unique<Impl>()) {
   impl_->cg.setTolerance(cg_tolerance);
   impl_->cg.setMaxIterations(cg_max_iterations);
-  impl_->cholmod.cholmod().print = 0;  // a non-positive-definite matrix is an answer, not a warning
 }
 
 SparseSolver::~SparseSolver() = default;
@@ -57,12 +57,18 @@ bool SparseSolver::factorize(const SparseMatrix& K) {
       s.cg.compute(K);  // the incomplete factorisation is redone for each matrix
       return s.cg.info() == Eigen::Success;
     case LinearSolverKind::cholmod:
-      if (!s.analysed) s.cholmod.analyzePattern(K);
-      s.analysed = true;
-      s.cholmod.factorize(K);
-      return s.cholmod.info() == Eigen::Success;
+      if (!s.cholmod.analysed()) s.cholmod.analyse(K);
+      return s.cholmod.factorize(K);
   }
   return false;
+}
+
+std::string SparseSolver::describe() const {
+  if (kind_ != LinearSolverKind::cholmod || !impl_->cholmod.analysed()) return to_string(kind_);
+  const CholmodFigures& f = impl_->cholmod.figures();
+  return "cholmod (supernodal, " + f.ordering + " ordering of the " + (f.node_ordering ? "node" : "unknown") +
+         " graph, nnz(L) " + format_number("%.3g", f.factor_nonzeros) + ", " + format_number("%.3g", f.flops) +
+         " flops per factorisation)";
 }
 
 Vector SparseSolver::solve(const Vector& b, LinearSolveStats& stats) {

@@ -1,7 +1,7 @@
 // One small interface over the sparse symmetric solvers of the static solve: Eigen's
 // SimplicialLDLT (direct, in-tree), Eigen's ConjugateGradient with an incomplete Cholesky
 // preconditioner (iterative, low memory) and SuiteSparse CHOLMOD's supernodal Cholesky
-// through Eigen's CholmodSupport (direct, for large problems). The pattern is analysed once
+// (direct, for large problems; cholmod_direct.hpp). The pattern is analysed once
 // and each Newton step only refactorises.
 #pragma once
 #include <memory>
@@ -33,6 +33,8 @@ class SparseSolver {
   SparseSolver& operator=(const SparseSolver&) = delete;
 
   LinearSolverKind kind() const { return kind_; }
+  // The solver's name and, for CHOLMOD once analysed, its ordering, nnz(L) and flop count.
+  std::string describe() const;
   // Factorises K (the pattern is analysed on the first call). Returns false when the direct
   // solvers find K not positive definite; CG only checks that its preconditioner exists.
   bool factorize(const SparseMatrix& K);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "statics/affine_stabilisation.hpp"
 #include "statics/spd_projection.hpp"
 
 namespace latmpm::statics {
@@ -35,6 +36,16 @@ void StaticProblem::set_point_forces(const std::vector<Vec3>& force) {
       external_.segment<3>(3 * band_.entry_node[e]) += band_.entry_weight[e] * force[p];
 }
 
+void StaticProblem::set_stabilisation(Real beta) {
+  stabilisation_ = beta;
+  stabilisation_blocks_.clear();
+  if (beta == 0) return;
+  const Real h = band_.cell_size;
+  std::vector<Real> coefficient(point_count());
+  for (size_t p = 0; p < point_count(); ++p) coefficient[p] = beta * energies_[material_[p]].mu * volume_[p] / (h * h);
+  stabilisation_blocks_ = affine_stabilisation_blocks(matrix_, band_, coefficient);
+}
+
 Mat3 StaticProblem::deformation_gradient(size_t p, const Vector& u) const {
   Mat3 F = Mat3::Identity();
   for (uint32_t e = band_.point_offset[p]; e < band_.point_offset[p + 1]; ++e)
@@ -61,6 +72,11 @@ Real StaticProblem::energy(const Vector& u) const {
   });
   Real sum = 0;
   for (Real s : part) sum += s;
+  if (!stabilisation_blocks_.empty()) {
+    Vector Ku = Vector::Zero(u.size());
+    matrix_.multiply_blocks(stabilisation_blocks_, u, Ku);
+    sum += Real(0.5) * u.dot(Ku);
+  }
   return sum - external_.dot(u);
 }
 
@@ -80,6 +96,7 @@ Vector StaticProblem::internal_force(const Vector& u) const {
       f.segment<3>(Eigen::Index(3 * n)) = sum;
     }
   });
+  if (!stabilisation_blocks_.empty()) matrix_.multiply_blocks(stabilisation_blocks_, u, f);
   return f;
 }
 
@@ -92,6 +109,7 @@ void StaticProblem::assemble_hessian(const Vector& u, bool projected) {
     std::vector<Mat9> tangent(energies_.size());
     for (size_t m = 0; m < energies_.size(); ++m) tangent[m] = energies_[m].tangent(Mat3::Identity());
     matrix_.assemble([&](size_t p, Mat9& A) { A = volume_[p] * tangent[material_[p]]; });
+    if (!stabilisation_blocks_.empty()) matrix_.add_blocks(stabilisation_blocks_);
     return;
   }
   point_tangent_.resize(point_count());
@@ -100,6 +118,7 @@ void StaticProblem::assemble_hessian(const Vector& u, bool projected) {
     point_tangent_[p] = volume_[p] * (projected ? project_to_semidefinite(A) : A);
   });
   matrix_.assemble([&](size_t p, Mat9& A) { A = point_tangent_[p]; });
+  if (!stabilisation_blocks_.empty()) matrix_.add_blocks(stabilisation_blocks_);
 }
 
 }  // namespace latmpm::statics

@@ -33,6 +33,11 @@ class StaticProblem {
   void set_point_forces(const std::vector<Vec3>& force);
   const Vector& external_force() const { return external_; }
 
+  // Adds the affine stabilisation (affine_stabilisation.hpp) with c_p = β μ_p V_p / h² to
+  // the energy, forces and Hessian; β = 0 removes it.
+  void set_stabilisation(Real beta);
+  Real stabilisation() const { return stabilisation_; }
+
   // Whether every energy is quadratic (linear elastic): constant Hessian, no inversion.
   bool is_quadratic() const;
 
@@ -62,6 +67,8 @@ class StaticProblem {
   std::vector<ElasticEnergy> energies_;
   Vector external_;
   BandMatrix matrix_;
+  Real stabilisation_ = 0;
+  std::vector<Real> stabilisation_blocks_;  // scalar Hessian of E_s per node pair (empty: none)
   std::vector<Mat9> point_tangent_;  // V_p ∂P/∂F of the last assembly (non-quadratic energies)
 };
 

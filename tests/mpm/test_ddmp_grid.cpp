@@ -11,6 +11,7 @@
 #include <random>
 
 #include "mpm/simulation.hpp"
+#include "mpm/simulation_test_access.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -53,16 +54,16 @@ TEST_CASE("DDMP's force and velocity gradient on the grid equal the per-particle
   const auto reference_sim = deformed_block(false, seed), grid_sim = deformed_block(true, seed);
   Simulation &reference = *reference_sim, &grid = *grid_sim;
   REQUIRE(reference.particles().size() == grid.particles().size());
-  reference.stage_particles_to_grid();
-  grid.stage_particles_to_grid();
+  SimulationTestAccess::particles_to_grid(reference);
+  SimulationTestAccess::particles_to_grid(grid);
 
   // Nodal internal forces: the grid path allocates only the blocks of the particles' own
   // cells; any node it lacks must carry no force in the reference.
   std::map<std::array<int, 3>, Vec3> grid_force;
-  for (const auto& n : grid.grid_nodes()) grid_force[n.index] = Vec3(n.lanes[4], n.lanes[5], n.lanes[6]);
+  for (const auto& n : SimulationTestAccess::grid_nodes(grid)) grid_force[n.index] = Vec3(n.lanes[4], n.lanes[5], n.lanes[6]);
   Real largest = 0, force_error = 0;
   size_t compared = 0;
-  for (const auto& n : reference.grid_nodes()) {
+  for (const auto& n : SimulationTestAccess::grid_nodes(reference)) {
     const Vec3 f(n.lanes[4], n.lanes[5], n.lanes[6]);
     const auto it = grid_force.find(n.index);
     const Vec3 g = it == grid_force.end() ? Vec3::Zero() : it->second;
@@ -79,9 +80,9 @@ TEST_CASE("DDMP's force and velocity gradient on the grid equal the per-particle
     const Vec3 y = x * 1e3;  // in cells
     return Vec3(std::sin(y[1]) + y[0] * y[2], std::cos(y[0] + 0.3 * y[2]), y[1] * y[1] - y[0]);
   };
-  reference.stage_set_grid_velocity(field);
-  grid.stage_set_grid_velocity(field);
-  const auto a = reference.gather_from_grid(), b = grid.gather_from_grid();
+  SimulationTestAccess::set_grid_velocity(reference, field);
+  SimulationTestAccess::set_grid_velocity(grid, field);
+  const auto a = SimulationTestAccess::gather_from_grid(reference), b = SimulationTestAccess::gather_from_grid(grid);
   Real largest_l = 0, l_error = 0, v_error = 0;
   for (size_t p = 0; p < a.velocity.size(); ++p) {
     REQUIRE(reference.particles().id[p] == grid.particles().id[p]);
@@ -100,12 +101,12 @@ TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to free surfaces, throu
   const auto sim_ptr = deformed_block(on_grid, 5);
   Simulation& sim = *sim_ptr;
   const Real h = sim.settings().cell_size;
-  sim.stage_particles_to_grid();
+  SimulationTestAccess::particles_to_grid(sim);
   // Σ_i f_i = −Σ_p V_p σ_p Σ_i ∇̄S_i = 0; Σ_i f_i ⊗ x_i = −Σ_p V_p σ_p Σ_i ∇̄S_i ⊗ x_i = −Σ_p V_p σ_p.
   Vec3 total = Vec3::Zero();
   Mat3 moment = Mat3::Zero();
   Real largest = 0;
-  for (const auto& n : sim.grid_nodes()) {
+  for (const auto& n : SimulationTestAccess::grid_nodes(sim)) {
     const Vec3 f(n.lanes[4], n.lanes[5], n.lanes[6]);
     const Vec3 x = h * Vec3(n.index[0], n.index[1], n.index[2]);
     total += f;
@@ -127,8 +128,8 @@ TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to free surfaces, throu
   Mat3 A;
   A << 3, -1, 2, 0.5, 4, -2, 1, 1, -3;
   const Vec3 b(0.2, -0.1, 0.3);
-  sim.stage_set_grid_velocity([&](const Vec3& x) { return Vec3(A * x + b); });
-  const auto g = sim.gather_from_grid();
+  SimulationTestAccess::set_grid_velocity(sim, [&](const Vec3& x) { return Vec3(A * x + b); });
+  const auto g = SimulationTestAccess::gather_from_grid(sim);
   Real l_error = 0;
   for (const Mat3& L : g.velocity_gradient) l_error = std::max(l_error, (L - A).norm());
   CHECK(l_error < 1e-11 * A.norm());
@@ -142,12 +143,12 @@ TEST_CASE("DDMP's small-mass nodes hand on their mass, momentum and force and re
   std::mt19937 rng(4);
   std::uniform_real_distribution<Real> u(-1, 1);
   for (auto& v : ps.velocity) v = Vec3(u(rng), u(rng), u(rng));
-  sim.stage_particles_to_grid();
-  const auto before = sim.grid_totals();
+  SimulationTestAccess::particles_to_grid(sim);
+  const auto before = SimulationTestAccess::grid_totals(sim);
   Vec3 force = Vec3::Zero();
   size_t small = 0, empty_with_force = 0;
   const Real small_mass = sim.settings().ddmp_small_mass_fraction * 1000 * std::pow(sim.settings().cell_size, 3);
-  for (const auto& n : sim.grid_nodes()) {
+  for (const auto& n : SimulationTestAccess::grid_nodes(sim)) {
     force += Vec3(n.lanes[4], n.lanes[5], n.lanes[6]);
     small += n.lanes[0] < small_mass;
     empty_with_force += n.lanes[0] == 0 && Vec3(n.lanes[4], n.lanes[5], n.lanes[6]).norm() > 0;
@@ -155,15 +156,15 @@ TEST_CASE("DDMP's small-mass nodes hand on their mass, momentum and force and re
   INFO(small << " nodes below the small mass, " << empty_with_force << " without mass but with force");
   REQUIRE(empty_with_force > 0);  // the smoothed force reaches beyond the material
   const Real dt = 1e-7;
-  sim.stage_grid_update(dt);
-  const auto after = sim.grid_totals();
+  SimulationTestAccess::grid_update(sim, dt);
+  const auto after = SimulationTestAccess::grid_totals(sim);
   // Mass is handed on, not lost; momentum changes by dt · Σ f (no gravity, no held nodes).
   CHECK(after.mass == Approx(before.mass).epsilon(1e-14));
   const Real momentum_scale = before.mass * 1;  // kg · (speeds ≤ √3 m/s)
   CHECK((after.momentum - before.momentum - dt * force).norm() < 1e-13 * momentum_scale);
   // Every node left with mass is above the small mass, or has no sizeable neighbour.
   Real small_left = 0;
-  for (const auto& n : sim.grid_nodes())
+  for (const auto& n : SimulationTestAccess::grid_nodes(sim))
     if (n.lanes[0] > 0 && n.lanes[0] < small_mass) small_left += n.lanes[0];
   CHECK(small_left < 1e-3 * before.mass);
 }

@@ -8,6 +8,7 @@
 
 #include "mpm/j2_material.hpp"
 #include "mpm/simulation.hpp"
+#include "mpm/simulation_test_access.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -103,9 +104,9 @@ TEST_CASE("A J2 body in the solver follows the one-point return under a homogene
   J2State state;
   J2Update ref;
   for (int k = 0; k < 100; ++k) {
-    sim.stage_particles_to_grid();
-    sim.stage_set_grid_velocity([&](const Vec3& x) { return Vec3(A * x); });
-    sim.stage_grid_to_particles(dt);
+    SimulationTestAccess::particles_to_grid(sim);
+    SimulationTestAccess::set_grid_velocity(sim, [&](const Vec3& x) { return Vec3(A * x); });
+    SimulationTestAccess::grid_to_particles(sim, dt);
     ref = j2_update(j2, Mat3::Identity() + dt * A, state);
     state = ref.state;
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "mpm/observers.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
 
@@ -63,7 +64,7 @@ TEST_CASE("The record-layer force is the layer's mean vertical stress times its 
   for (auto& stress : sim.mutable_particles().stress) stress[2] = sigma_zz;
   sim.step();
   // One tiny step changes the stress by a relative 1e-6 at most.
-  CHECK(sim.last_diagnostics().record_force == Approx(sigma_zz * 12 * h * h).epsilon(1e-4));
+  CHECK(RecordLayerForce(sim)(sim) == Approx(sigma_zz * 12 * h * h).epsilon(1e-4));
 }
 
 TEST_CASE("Mass scaling multiplies the mass and enlarges the stable step by its square root", "[mpm][simulation]") {

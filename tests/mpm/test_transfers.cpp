@@ -5,6 +5,7 @@
 #include <random>
 
 #include "mpm/simulation.hpp"
+#include "mpm/simulation_test_access.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -55,24 +56,24 @@ TEST_CASE("Particles-to-grid and grid-to-particles conserve mass and momentum", 
     momentum += sim.particles().mass[p] * v;
   }
   INFO("shape " << to_string(shape));
-  sim.stage_particles_to_grid();
-  const auto grid = sim.grid_totals();
+  SimulationTestAccess::particles_to_grid(sim);
+  const auto grid = SimulationTestAccess::grid_totals(sim);
   CHECK(std::abs(grid.mass - mass) <= 1e-12 * mass);
   CHECK((grid.momentum - momentum).norm() <= 1e-12 * momentum.norm());
 
   // No stress and no gravity: the grid update keeps each node's velocity, and a PIC gather
   // hands the grid's momentum back to the particles.
-  sim.stage_grid_update(1e-6);
-  CHECK((sim.grid_totals().momentum - momentum).norm() <= 1e-12 * momentum.norm());
+  SimulationTestAccess::grid_update(sim, 1e-6);
+  CHECK((SimulationTestAccess::grid_totals(sim).momentum - momentum).norm() <= 1e-12 * momentum.norm());
   Settings pic = sim.settings();
   pic.flip_blend = 0;
   Simulation pic_sim(points, block_body(), pic);
   for (size_t p = 0; p < pic_sim.particles().size(); ++p)
     pic_sim.mutable_particles().velocity[p] = sim.particles().velocity[p];
-  pic_sim.stage_particles_to_grid();
-  pic_sim.stage_grid_update(1e-6);
-  const Vec3 grid_momentum = pic_sim.grid_totals().momentum;
-  pic_sim.stage_grid_to_particles(1e-6);
+  SimulationTestAccess::particles_to_grid(pic_sim);
+  SimulationTestAccess::grid_update(pic_sim, 1e-6);
+  const Vec3 grid_momentum = SimulationTestAccess::grid_totals(pic_sim).momentum;
+  SimulationTestAccess::grid_to_particles(pic_sim, 1e-6);
   Vec3 after = Vec3::Zero();
   for (size_t p = 0; p < pic_sim.particles().size(); ++p)
     after += pic_sim.particles().mass[p] * pic_sim.particles().velocity[p];
@@ -119,9 +120,9 @@ TEST_CASE("A uniform velocity gradient on the grid is reproduced at every partic
   PointSet points = block_points(h);
   for (auto& x : points.position) x += 0.3 * h * Eigen::Vector3d(u(rng), u(rng), u(rng));
   Simulation sim(points, block_body(), settings_for(shape, h));
-  sim.stage_particles_to_grid();
-  sim.stage_set_grid_velocity([&](const Vec3& x) { return Vec3(A * x + b); });
-  const auto g = sim.gather_from_grid();
+  SimulationTestAccess::particles_to_grid(sim);
+  SimulationTestAccess::set_grid_velocity(sim, [&](const Vec3& x) { return Vec3(A * x + b); });
+  const auto g = SimulationTestAccess::gather_from_grid(sim);
   INFO("shape " << to_string(shape));
   Real v_error = 0, l_error = 0;
   for (size_t p = 0; p < sim.particles().size(); ++p) {
@@ -143,9 +144,9 @@ TEST_CASE("A uniform-strain patch mapped through P2G and G2P is exact away from 
   Simulation sim(points, block_body(), settings_for(shape, h));
   for (size_t p = 0; p < sim.particles().size(); ++p)
     sim.mutable_particles().velocity[p] = A * sim.particles().position[p];
-  sim.stage_particles_to_grid();
-  sim.stage_grid_update(1e-7);
-  const auto g = sim.gather_from_grid();
+  SimulationTestAccess::particles_to_grid(sim);
+  SimulationTestAccess::grid_update(sim, 1e-7);
+  const auto g = SimulationTestAccess::gather_from_grid(sim);
   const Eigen::Vector3d lo = h * Eigen::Vector3d(-5, -3, 2), hi = h * Eigen::Vector3d(7, 7, 11);
   int interior = 0;
   Real l_error = 0;

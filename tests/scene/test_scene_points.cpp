@@ -119,3 +119,46 @@ TEST_CASE("A described body that no point file holds is an error at the body's l
     CHECK_THAT(e.problem(), Catch::Contains("column"));
   }
 }
+
+TEST_CASE("An omitted body's points are dropped with their tags, the others keep theirs", "[scene]") {
+  PointSet a = line_of_points({"bottom_plate", "lattice", "top_plate"}, 4, 1);
+  a.tags["record"][0] = 1;  // the bottom plate's first point, dropped with it
+  a.tags["top_layer"].assign(a.size(), 0);
+  for (size_t p = 8; p < 12; ++p) a.tags["top_layer"][p] = 1;  // the top plate's points
+  a.tags["top_layer"][4] = 1;                                    // and one lattice point
+  std::string fa = write(a, "omit.h5");
+  Scene s = scene_with({"lattice"}, {fa});
+  for (const char* name : {"bottom_plate", "top_plate"}) {
+    BodySpec b;
+    b.name = name;
+    b.where = "scene.toml:30";
+    s.omitted_bodies.push_back(b);
+  }
+  PointSet all = load_scene_points(s);
+  REQUIRE(all.size() == 4);
+  CHECK(all.body_names == std::vector<std::string>{"lattice"});
+  CHECK(total_volume(all, 0) == Approx(total_volume(a, 1)));
+  auto count = [](const std::vector<uint8_t>& m) { return std::accumulate(m.begin(), m.end(), 0); };
+  REQUIRE(all.tags.at("record").size() == 4);
+  CHECK(count(all.tags.at("record")) == 0);
+  CHECK(count(all.tags.at("top_layer")) == 1);
+  CHECK(all.tags.at("top_layer")[0] == 1);
+  CHECK_NOTHROW(all.validate("omitted"));
+}
+
+TEST_CASE("An omitted body that no point file holds is an error at its line", "[scene]") {
+  std::string fa = write(line_of_points({"lattice"}, 2, 1), "omit-missing.h5");
+  Scene s = scene_with({"lattice"}, {fa});
+  BodySpec plate;
+  plate.name = "top_plat";
+  plate.where = "scene.toml:31";
+  s.omitted_bodies.push_back(plate);
+  try {
+    load_scene_points(s);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.where() == "scene.toml:31");
+    CHECK(e.field() == "bodies.top_plat");
+    CHECK_THAT(e.problem(), Catch::Contains("lattice"));
+  }
+}

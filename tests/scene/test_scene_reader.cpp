@@ -138,6 +138,7 @@ TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
       {12, "role = \"deformable\"\nhold = { tag = \"\" }", "scene.toml:13", "bodies.column.hold.tag", "must name"},
       {12, "role = \"deformable\"\nhold = { tags = \"record\" }", "scene.toml:13", "bodies.column.hold.tags",
        "unknown key"},
+      {15, "role = \"omitted\"", "scene.toml:16", "bodies.top.velocity", "unknown key"},
   }));
   CAPTURE(c.replacement);
   try {
@@ -244,4 +245,22 @@ TEST_CASE("A j2 material reads paper B's hardening law with defaults, and other 
   CHECK_THROWS_WITH(parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
                                         "y0 = \"668MPa\", eta = -1 }")),
                     Catch::Contains("eta"));
+}
+
+TEST_CASE("An omitted body is listed apart from the simulated ones and kept in the resolved scene", "[scene]") {
+  // The driven plate as a rigid half-space, the body "top" of the point files omitted.
+  std::string text = with_line(16, "") + "[rigid_bodies.platen]\nmotion = \"driven\"\nshape = \"half_space\"\n"
+                     "point = [\"0mm\", \"0mm\", \"2mm\"]\nnormal = [0, 0, -1]\n"
+                     "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\n";
+  text.replace(text.find("role = \"driven\""), 15, "role = \"omitted\"");
+  const Scene s = parse(text);
+  REQUIRE(s.bodies.size() == 1);
+  CHECK(s.bodies[0].name == "column");
+  REQUIRE(s.omitted_bodies.size() == 1);
+  CHECK(s.omitted_bodies[0].name == "top");
+  CHECK(s.omitted_bodies[0].where == "scene.toml:15");
+  CHECK(s.body("top") == nullptr);
+  const Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
+  REQUIRE(again.omitted_bodies.size() == 1);
+  CHECK(again.omitted_bodies[0].name == "top");
 }

@@ -1,39 +1,42 @@
-// Single stages of a step, public so tests can check each transfer on its own
-// (conservation, patch tests). A run uses Simulation::step().
-#include "mpm/simulation.hpp"
-#include "mpm/simulation_impl.hpp"
+// Single stages of a step for tests (simulation_test_access.hpp): the same stage functions
+// the step calls (step_stages.hpp), one at a time.
+#include "mpm/simulation_test_access.hpp"
+
+#include "mpm/step_stages.hpp"
 
 namespace latmpm::mpm {
 
-void Simulation::stage_particles_to_grid() {
-  auto& im = *impl_;
-  im.needs_sort = true;  // positions may have been set from outside
-  im.arena.execute([&] {
-    im.with_solver_shape([&](auto shape) {
+void SimulationTestAccess::particles_to_grid(Simulation& sim) {
+  SolverState& s = sim.state_;
+  StepContext& c = *sim.context_;
+  s.needs_sort = true;  // positions may have been set from outside
+  c.arena.execute([&] {
+    with_solver_shape(c.settings, [&](auto shape) {
       using Shape = decltype(shape);
-      im.prepare_grid<Shape>();
-      im.scatter<Shape, ScatterAll>();
+      prepare_grid<Shape>(s, c);
+      scatter<Shape, ScatterAll>(s, c);
     });
   });
 }
 
-void Simulation::stage_grid_update(Real dt) {
-  auto& im = *impl_;
-  im.arena.execute([&] {
-    im.with_solver_shape([&](auto shape) {
+void SimulationTestAccess::grid_update(Simulation& sim, Real dt) {
+  SolverState& s = sim.state_;
+  StepContext& c = *sim.context_;
+  c.arena.execute([&] {
+    with_solver_shape(c.settings, [&](auto shape) {
       using Shape = decltype(shape);
-      im.add_contact_forces<Shape>();
-      im.ddmp_hand_on<Shape>(lane::mass, 7, true);
-      im.reactions = update_grid_velocities(im.grid, dt, settings_.gravity, im.body_info);
-      im.constrain_boundaries(dt);
-      im.ddmp_read_back<Shape>(lane::momentum, 6);
+      add_contact_forces<Shape>(s, c);
+      ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
+      update_nodes(s, c, dt);
+      ddmp_read_back<Shape>(s, c, lane::momentum, 6);
     });
   });
-  im.grid_holds_velocity = true;
+  s.grid_holds_velocity = true;
 }
 
-void Simulation::stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>& field) {
-  auto& g = impl_->grid;
+void SimulationTestAccess::set_grid_velocity(Simulation& sim, const std::function<Vec3(const Vec3&)>& field) {
+  auto& g = sim.state_.grid;
+  const Real h = sim.settings_.cell_size;
   constexpr int bw = SparseGrid::block_width;
   for (size_t b = 0; b < g.block_count(); ++b) {
     const auto c = g.coord(b);
@@ -41,54 +44,57 @@ void Simulation::stage_set_grid_velocity(const std::function<Vec3(const Vec3&)>&
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real* node = g.block(b) + SparseGrid::node_offset(i, j, k);
-          const Vec3 v = field(SparseGrid::node_position(c[0] * bw + i, c[1] * bw + j, c[2] * bw + k, settings_.cell_size));
+          const Vec3 v = field(SparseGrid::node_position(c[0] * bw + i, c[1] * bw + j, c[2] * bw + k, h));
           for (int a = 0; a < 3; ++a) node[lane::momentum + a] = node[lane::force + a] = v[a];
         }
   }
-  impl_->grid_holds_velocity = true;
+  sim.state_.grid_holds_velocity = true;
 }
 
-void Simulation::stage_grid_to_particles(Real dt) {
-  auto& im = *impl_;
-  im.arena.execute([&] {
-    im.with_solver_shape([&](auto shape) { im.gather<decltype(shape), GatherAll>(dt); });
+void SimulationTestAccess::grid_to_particles(Simulation& sim, Real dt) {
+  SolverState& s = sim.state_;
+  StepContext& c = *sim.context_;
+  c.arena.execute([&] {
+    with_solver_shape(c.settings, [&](auto shape) { gather<decltype(shape), GatherAll>(s, c, dt); });
   });
 }
 
-Simulation::GridTotals Simulation::grid_totals() const {
+SimulationTestAccess::GridTotals SimulationTestAccess::grid_totals(const Simulation& sim) {
   GridTotals t;
-  const auto& g = impl_->grid;
+  const auto& g = sim.state_.grid;
   for (size_t b = 0; b < g.block_count(); ++b)
     for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
       const Real* node = g.block(b) + n * lane::count;
       t.mass += node[lane::mass];
-      const Real scale = impl_->grid_holds_velocity ? node[lane::mass] : Real(1);
+      const Real scale = sim.state_.grid_holds_velocity ? node[lane::mass] : Real(1);
       for (int a = 0; a < 3; ++a) t.momentum[a] += scale * node[lane::momentum + a];
     }
   return t;
 }
 
-Simulation::Gathered Simulation::gather_from_grid() const {
-  const Particles& copy = particles_;
-  auto& im = *impl_;
+SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simulation& sim) {
+  const Particles& copy = sim.state_.particles;
+  const SolverState& s = sim.state_;
+  StepContext& c = *sim.context_;
+  const Real h = sim.settings_.cell_size;
   Gathered out;
   out.velocity.resize(copy.size());
   out.velocity_gradient.resize(copy.size());
   BucketBuffer buffer;
-  im.with_solver_shape([&](auto shape) {
+  with_solver_shape(c.settings, [&](auto shape) {
     using Shape = decltype(shape);
     constexpr int N = Shape::nodes_per_axis;
     constexpr bool nodal_gradient = has_grid_smoothed_gradient<Shape>::value;
     if constexpr (nodal_gradient)
-      ddmp_nodal_velocity_gradient(im.grid, lane::momentum, settings_.cell_size, im.ddmp_nodal);
-    for (size_t bi = 0; bi < im.buckets.buckets().size(); ++bi) {
-      const Bucket& b = im.buckets.buckets()[bi];
+      ddmp_nodal_velocity_gradient(s.grid, lane::momentum, h, c.ddmp_nodal);
+    for (size_t bi = 0; bi < s.buckets.buckets().size(); ++bi) {
+      const Bucket& b = s.buckets.buckets()[bi];
       buffer.attach(b);
-      buffer.ddmp_alpha = im.ddmp_partition();
-      copy_box_from_grid(b, im.tables[bi], im.grid, buffer);
-      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, im.tables[bi], im.ddmp_nodal, buffer);
+      buffer.ddmp_alpha = c.ddmp_partition();
+      copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
+      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {
-        const auto st = particle_stencil<Shape>(copy, p, settings_.cell_size, buffer);
+        const auto st = particle_stencil<Shape>(copy, p, h, buffer);
         Vec3 v = Vec3::Zero();
         Mat3 grad = Mat3::Zero();
         for (int i = 0; i < N; ++i)
@@ -106,7 +112,7 @@ Simulation::Gathered Simulation::gather_from_grid() const {
           Real L[9];
           ddmp_corner_velocity_gradient(st, buffer, L);
           for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) grad(r, c) += L[r * 3 + c];
+            for (int k = 0; k < 3; ++k) grad(r, k) += L[r * 3 + k];
         } else if constexpr (has_smoothed_gradient<Shape>::value)
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
@@ -123,8 +129,8 @@ Simulation::Gathered Simulation::gather_from_grid() const {
   return out;
 }
 
-std::vector<Simulation::GridNode> Simulation::grid_nodes() const {
-  const auto& g = impl_->grid;
+std::vector<SimulationTestAccess::GridNode> SimulationTestAccess::grid_nodes(const Simulation& sim) {
+  const auto& g = sim.state_.grid;
   constexpr int bw = SparseGrid::block_width;
   std::vector<GridNode> out;
   for (size_t b = 0; b < g.block_count(); ++b) {

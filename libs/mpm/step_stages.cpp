@@ -1,0 +1,229 @@
+// The stages of a step that do not depend on the shape function (step_stages.hpp): bucket
+// boxes, the passes' sums and their checks, the node update with the boundaries, penalty
+// contact, and the carried speeds and energies the stable time step uses.
+#include "mpm/step_stages.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "mpm/body.hpp"
+
+namespace latmpm::mpm {
+
+void compute_boxes_from_positions(SolverState& s, const StepContext& c) {
+  const Real inv_h = 1 / c.settings.cell_size;
+  auto& list = s.buckets.buckets();
+  const Particles& ps = s.particles;
+  tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
+    Bucket& b = list[bi];
+    std::array<int, 3> lo{max_cell_coord, max_cell_coord, max_cell_coord}, hi{-max_cell_coord, -max_cell_coord, -max_cell_coord};
+    for (uint32_t p = b.begin; p < b.end; ++p) {
+      const auto cell = cell_of(ps.position[p], inv_h);
+      for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
+    }
+    b.box_lo = lo;
+    b.box_hi = hi;
+  });
+}
+
+void take_cell_ranges(SolverState& s, const StepContext& c) {
+  auto& list = s.buckets.buckets();
+  for (size_t bi = 0; bi < list.size(); ++bi) {
+    list[bi].box_lo = c.tallies[bi].cell_min;
+    list[bi].box_hi = c.tallies[bi].cell_max;
+    if (c.tallies[bi].drifted) s.needs_sort = true;
+  }
+  if (s.needs_sort) return;
+  // Buckets holding only rigid points of a fixed body have no tally cells; keep them valid.
+  for (size_t bi = 0; bi < list.size(); ++bi)
+    if (list[bi].box_lo[0] > list[bi].box_hi[0]) s.needs_sort = true;
+}
+
+namespace {
+[[noreturn]] void throw_fault(const SolverState& s, const StepContext& c, ParticleFault fault, uint32_t p) {
+  const Particles& ps = s.particles;
+  std::ostringstream msg;
+  msg.precision(6);
+  msg << "step " << s.diagnostics.step + 1 << " (t = " << s.diagnostics.time << " s): particle " << ps.id[p]
+      << " of body '" << c.bodies[size_t(ps.body[p])].name << "' at (" << ps.position[p][0] << ", "
+      << ps.position[p][1] << ", " << ps.position[p][2] << ") m ";
+  switch (fault) {
+    case ParticleFault::not_finite: msg << "has a NaN or infinite velocity, position or stress"; break;
+    case ParticleFault::inverted:
+      msg << "is inverted or crushed (J = " << ps.deformation[p].determinant() << " <= " << c.settings.min_jacobian
+          << ")";
+      break;
+    case ParticleFault::left_grid: msg << "left the grid (more than " << max_cell_coord << " cells from the origin)"; break;
+    case ParticleFault::none: break;
+  }
+  msg << "; try a smaller cfl or time step";
+  throw NumericalError(msg.str());
+}
+}  // namespace
+
+void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient) {
+  PassSums local;
+  for (size_t bi = 0; bi < c.tallies.size(); ++bi) {
+    const BucketTally& t = c.tallies[bi];
+    if (t.fault != ParticleFault::none) throw_fault(s, c, t.fault, t.fault_particle);
+    local.kinetic += t.kinetic;
+    local.strain += t.strain;
+    local.gravity_power += t.gravity_power;
+    local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
+    local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
+  }
+  PassSums& sums = c.sums;
+  if (velocity) {
+    sums.kinetic = c.domain.reduce_sum(local.kinetic);
+    sums.max_speed_sq = c.domain.reduce_max(local.max_speed_sq);
+  }
+  if (position) {
+    sums.gravity_power = c.domain.reduce_sum(local.gravity_power);
+    take_cell_ranges(s, c);
+  }
+  if (gradient) {
+    sums.strain = c.domain.reduce_sum(local.strain);
+    sums.max_wave_speed_sq = c.domain.reduce_max(local.max_wave_speed_sq);
+  }
+}
+
+BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt) {
+  return {s.grid, c.settings.cell_size, dt, c.settings.gravity, &c.reactions, c.penalty_contact ? &c.contact : nullptr};
+}
+
+void update_nodes(SolverState& s, StepContext& c, Real dt) {
+  c.reactions = update_grid_velocities(s.grid, dt, c.settings.gravity, c.body_info);
+  for (size_t b = 0; b < c.reactions.force.size(); ++b) {
+    c.reactions.force[b] = c.domain.reduce_sum(c.reactions.force[b]);
+    c.reactions.power[b] = c.domain.reduce_sum(c.reactions.power[b]);
+  }
+  constrain_boundaries(s, c, dt);
+}
+
+void constrain_boundaries(SolverState& s, StepContext& c, Real dt) {
+  BoundaryPass pass = boundary_pass(s, c, dt);
+  for (auto& b : s.boundaries) {
+    std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
+    // A no-slip rigid body's reaction is a sum over this process's nodes.
+    if (auto* rigid = std::get_if<RigidBoundary>(&b)) rigid->reaction = c.domain.reduce_sum(rigid->reaction);
+  }
+}
+
+void impose_boundaries(SolverState& s, StepContext& c, int lane) {
+  BoundaryPass pass = boundary_pass(s, c, 0);
+  for (auto& b : s.boundaries) std::visit([&](auto& boundary) { boundary.impose(pass, lane); }, b);
+}
+
+void enable_penalty_contact(SolverState& s, StepContext& c) {
+  c.penalty_contact = true;
+  Particles& ps = s.particles;
+  if (ps.contact_body.empty()) ps.contact_body.assign(ps.size(), -1), ps.contact_anchor.assign(ps.size(), Vec3::Zero());
+  c.contact_materials.assign(c.body_info.size(), ContactMaterial{});
+  for (size_t b = 0; b < c.body_info.size(); ++b) {
+    if (c.body_info[b].role != BodyRole::deformable) continue;
+    const Real c2 = std::visit([](const auto& m) { return m.wave_speed_squared(1); }, c.body_info[b].model);
+    c.contact_materials[b] = {true, default_contact_stiffness_per_mass(c2, c.settings.cell_size)};
+  }
+  c.contact_rate_sq = c.domain.reduce_max(stable_contact_rate_squared(ps, c.contact_materials, c.rigid_bodies));
+}
+
+void update_contact_forces(SolverState& s, StepContext& c) {
+  update_penalty_contacts(s.particles, c.contact_materials, c.rigid_bodies, s.diagnostics.rigid, c.contact);
+  for (size_t r = 0; r < c.contact.reaction.size(); ++r) {
+    c.contact.reaction[r] = c.domain.reduce_sum(c.contact.reaction[r]);
+    c.contact.power[r] = c.domain.reduce_sum(c.contact.power[r]);
+  }
+}
+
+Real ddmp_small_mass(const SolverState& s, StepContext& c) {
+  if (c.ddmp_small_mass < 0) {
+    const Particles& ps = s.particles;
+    Real density = std::numeric_limits<Real>::infinity();
+    for (size_t p = 0; p < ps.size(); ++p)
+      if (c.body_info[size_t(ps.body[p])].role == BodyRole::deformable && ps.volume0[p] > 0)
+        density = std::min(density, ps.mass[p] / ps.volume0[p]);
+    density = c.domain.reduce_min(density);
+    const Real h = c.settings.cell_size;
+    c.ddmp_small_mass = std::isfinite(density) ? c.settings.ddmp_small_mass_fraction * density * h * h * h : 0;
+  }
+  return c.ddmp_small_mass;
+}
+
+Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body) {
+  Vec3 mx = Vec3::Zero();
+  Real m = 0;
+  const auto& runs = s.buckets.runs();
+  for (size_t r = 0; r < runs.size(); ++r)
+    if (size_t(runs[r].body) == body) mx += c.run_tallies[r].mass_position, m += c.run_tallies[r].mass;
+  mx = c.domain.reduce_sum(mx);
+  m = c.domain.reduce_sum(m);
+  return m > 0 ? Vec3(mx / m) : Vec3::Zero();
+}
+
+Real energy_density(const SolverState& s, const StepContext& c, size_t p) {
+  const Particles& ps = s.particles;
+  const BodyInfo& body = c.body_info[size_t(ps.body[p])];
+  return std::visit([&](const auto& m) {
+    constexpr size_t count = history_size<std::decay_t<decltype(m)>>;
+    Real history[count > 0 ? count : 1] = {};
+    for (size_t k = 0; k < count; ++k) history[k] = ps.history[body.history_columns[k]].values[p];
+    return strain_energy_density(m, ps.deformation[p], ps.stress[p], history);
+  }, body.model);
+}
+
+CarriedState carried_from_particles(const SolverState& s, const StepContext& c) {
+  const Particles& ps = s.particles;
+  CarriedState carried = s.carried;
+  Real max_speed = 0, max_wave_speed = 0, initial_energy = 0;
+  const size_t nb = c.body_info.size();
+  for (size_t b = 0; b < nb; ++b) {
+    if (c.body_info[b].role == BodyRole::deformable)
+      max_wave_speed = std::max(max_wave_speed,
+          std::sqrt(std::visit([](const auto& m) { return m.wave_speed_squared(1); }, c.body_info[b].model)));
+    else
+      max_speed = std::max(max_speed, c.body_info[b].velocity.norm());
+  }
+  for (const auto& r : s.diagnostics.rigid) max_speed = std::max(max_speed, r.velocity.norm());
+  std::vector<Vec3> mx(nb, Vec3::Zero());
+  std::vector<Real> mass(nb, 0);
+  for (size_t p = 0; p < ps.size(); ++p) {
+    const size_t b = size_t(ps.body[p]);
+    mx[b] += ps.mass[p] * ps.position[p];
+    mass[b] += ps.mass[p];
+    if (c.body_info[b].role != BodyRole::deformable) continue;
+    max_speed = std::max(max_speed, ps.velocity[p].norm());
+    initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() + ps.volume0[p] * energy_density(s, c, p);
+  }
+  carried.max_speed = c.domain.reduce_max(max_speed);
+  carried.max_wave_speed = c.domain.reduce_max(max_wave_speed);
+  carried.initial_energy = c.domain.reduce_sum(initial_energy);
+  carried.initial_centre.assign(nb, Vec3::Zero());
+  for (size_t b = 0; b < nb; ++b) {
+    mx[b] = c.domain.reduce_sum(mx[b]);
+    mass[b] = c.domain.reduce_sum(mass[b]);
+    if (mass[b] > 0) carried.initial_centre[b] = mx[b] / mass[b];
+  }
+  return carried;
+}
+
+void refresh_carried(SolverState& s, StepContext& c) {
+  s.carried = carried_from_particles(s, c);
+  c.refresh_needed = false;
+}
+
+// cfl · h/(c + |v|); with penalty contact cfl · 2/√(ω² + κ/m), ω = 2(c + |v|)/h the
+// grid's highest frequency and κ/m the largest of a contact spring (rigid_contact.hpp).
+Real stable_time_step(const SolverState& s, const StepContext& c) {
+  const CarriedState carried = c.refresh_needed ? carried_from_particles(s, c) : s.carried;
+  const Real speed = carried.max_wave_speed + carried.max_speed;
+  const Settings& st = c.settings;
+  if (c.contact_rate_sq > 0) {
+    const Real rate = speed / st.cell_size;
+    return st.cfl / std::sqrt(rate * rate + c.contact_rate_sq / 4);
+  }
+  return speed > 0 ? st.cfl * st.cell_size / speed : std::numeric_limits<Real>::infinity();
+}
+
+}  // namespace latmpm::mpm

@@ -1,0 +1,335 @@
+// The stages of a step as functions over the solver state (solver_state.hpp) and a
+// StepContext: what the step needs besides the state (settings, the body table, the threads
+// and their scratch, the domain). The three update schemes (Nairn 2003; Bardenhagen 2002)
+// at the end of this file order the stages; the stages themselves live in transfer.hpp
+// (particles ↔ grid, per bucket) and grid_update.cpp (nodes). Not installed for users:
+// simulation.hpp is the interface. The domain (domain.hpp) is called where a run spread
+// over processes needs it: migrate before a sort, halo exchange after every scatter,
+// reductions of every sum the step makes over particles or nodes.
+#pragma once
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <type_traits>
+#include <vector>
+
+#include "mpm/ddmp_grid.hpp"
+#include "mpm/domain.hpp"
+#include "mpm/grid_update.hpp"
+#include "mpm/rigid_contact.hpp"
+#include "mpm/settings.hpp"
+#include "mpm/shape_functions.hpp"
+#include "mpm/solver_state.hpp"
+#include "mpm/transfer.hpp"
+
+namespace latmpm::mpm {
+
+struct BodySettings;
+
+// The scatter and gather modes the three schemes combine.
+using ScatterAll = ScatterMode<true, lane::momentum, true, true>;         // m, p, f, constraints
+using ScatterMomentum = ScatterMode<true, lane::momentum, false, true>;    // m, p, constraints
+using ScatterRemap = ScatterMode<false, lane::force, false, false>;       // p into lanes 4–6
+using ScatterForce = ScatterMode<false, -1, true, false>;                 // f only
+using GatherAll = GatherMode<true, true, lane::momentum>;
+using GatherVelocity = GatherMode<true, false, -1>;
+using GatherMotion = GatherMode<true, true, -1>;
+using GatherStrain = GatherMode<false, false, lane::force>;
+using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
+
+// The particle passes' sums (after the domain's reductions).
+struct PassSums {
+  Real kinetic = 0, strain = 0, gravity_power = 0;
+  Real max_speed_sq = 0, max_wave_speed_sq = 0;
+};
+
+// Everything a step needs besides the state; rebuilt from the scene, never saved.
+struct StepContext {
+  StepContext(const Settings& s, const std::vector<BodySettings>& b, const std::vector<RigidBodySettings>& r)
+      : settings(s), bodies(b), rigid_bodies(r), arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic) {}
+
+  const Settings& settings;
+  const std::vector<BodySettings>& bodies;               // their names, for messages
+  const std::vector<RigidBodySettings>& rigid_bodies;    // as added
+  std::vector<BodyInfo> body_info;                       // per body: role, material, history columns
+  Domain domain;  // other processes' parts (domain.hpp): nothing to do for one
+  tbb::task_arena arena;
+  tbb::enumerable_thread_specific<BucketBuffer> buffers;
+  std::vector<BlockTable> tables;   // per bucket: its 4×4×4 grid blocks, from prepare_grid
+  std::vector<BucketTally> tallies;
+  std::vector<RunTally> run_tallies;
+  PassSums sums;
+  Reactions reactions;              // of the node update, per point body
+  DdmpNodalValues ddmp_nodal;       // DDMP: σ^d, L and small-mass shares per node (ddmp_grid.hpp)
+  Real ddmp_small_mass = -1;        // DDMP: below this a node's lanes go to its neighbours, kg (set on first use)
+  // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
+  bool penalty_contact = false;
+  std::vector<ContactMaterial> contact_materials;  // per point body
+  ContactForces contact;                           // of the current step, in particle order
+  Real contact_rate_sq = 0;                        // largest κ_p/m_p, 1/s²
+  // The carried speeds and energies must be taken from the particles again (at the start,
+  // after mutable_particles() or a rigid body was added).
+  bool refresh_needed = true;
+
+  DdmpPartition ddmp_partition() const { return {settings.ddmp_alpha_peak, settings.ddmp_alpha_exponent}; }
+};
+
+// Calls f(Shape{}) with the policy the run uses: the settings' shape function, DDMP with
+// its smoothed part on the grid (DdmpGridShape) unless Settings::ddmp_on_grid is off.
+template <class F>
+void with_solver_shape(const Settings& settings, F&& f) {
+  with_shape_function(settings.shape_function, [&](auto shape) {
+    if constexpr (std::is_same_v<decltype(shape), DdmpShape>)
+      if (settings.ddmp_on_grid) return f(DdmpGridShape{});
+    return f(shape);
+  });
+}
+// DDMP on the grid: its smoothed force reaches one node beyond the particles' cells.
+template <class Shape>
+inline constexpr int grid_halo = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
+
+// --- Stages without a shape function (step_stages.cpp) ------------------------------------
+
+// Node boxes from the particles' cells (after a sort or when positions were set).
+void compute_boxes_from_positions(SolverState& s, const StepContext& c);
+// After a pass that moved the particles: the buckets' cell ranges for the next step.
+void take_cell_ranges(SolverState& s, const StepContext& c);
+// The bucket tallies of a gather summed (in bucket order) and reduced over the domain;
+// throws NumericalError naming the first faulty particle.
+void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient);
+// The node update (grid_update.hpp) and its reactions, then every boundary's constraint.
+void update_nodes(SolverState& s, StepContext& c, Real dt);
+// After the node update: every boundary constrains its nodes and keeps its reaction.
+void constrain_boundaries(SolverState& s, StepContext& c, Real dt);
+// The boundaries' velocities on the field in lanes [lane, lane + 3), without reactions.
+void impose_boundaries(SolverState& s, StepContext& c, int lane);
+BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt);
+// After a penalty body was added: contact history for every point, the default stiffness
+// per body and the contact's bound on the time step.
+void enable_penalty_contact(SolverState& s, StepContext& c);
+// The penalty contact forces at the start of the step (positions x^n, bodies at X^n).
+void update_contact_forces(SolverState& s, StepContext& c);
+// ε ρ h³, ρ the smallest density of a deformable body's points (Settings::ddmp_small_mass_fraction).
+Real ddmp_small_mass(const SolverState& s, StepContext& c);
+// Centre of mass of body `body` from the last position pass's run tallies, m.
+Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body);
+// ψ of deformable particle p (J/m³ of reference volume), with its history if its model has one.
+Real energy_density(const SolverState& s, const StepContext& c, size_t p);
+// The carried state with speeds, energy and body centres from the particles as they are now:
+// at the start, and after a caller changed them through mutable_particles() before the
+// first step. refresh_carried keeps it (StepContext::refresh_needed).
+CarriedState carried_from_particles(const SolverState& s, const StepContext& c);
+void refresh_carried(SolverState& s, StepContext& c);
+// cfl · h/(c + |v|); with penalty contact cfl · 2/√(ω² + κ/m) (rigid_contact.hpp); from
+// the particles as they are now when the carried state needs a refresh.
+Real stable_time_step(const SolverState& s, const StepContext& c);
+
+// --- The grid and the transfers -------------------------------------------------------
+
+template <class Shape>
+void prepare_grid(SolverState& s, StepContext& c) {
+  if (s.needs_sort) {
+    c.domain.migrate_particles(s.particles);
+    s.buckets.sort(s.particles, c.settings.cell_size);
+    compute_boxes_from_positions(s, c);
+    s.needs_sort = false;
+  }
+  // Bucket boxes hold cell ranges until here; widen them by the stencil's reach.
+  std::vector<uint64_t> keys;
+  auto& list = s.buckets.buckets();
+  constexpr int bw = SparseGrid::block_width;
+  for (Bucket& b : list) {
+    for (int a = 0; a < 3; ++a) {
+      b.box_lo[a] += Shape::reach_below;
+      b.box_hi[a] += Shape::reach_above;
+    }
+    constexpr int e = grid_halo<Shape>;
+    for (int i = floor_div(b.box_lo[0] - e, bw); i <= floor_div(b.box_hi[0] + e, bw); ++i)
+      for (int j = floor_div(b.box_lo[1] - e, bw); j <= floor_div(b.box_hi[1] + e, bw); ++j)
+        for (int k = floor_div(b.box_lo[2] - e, bw); k <= floor_div(b.box_hi[2] + e, bw); ++k)
+          keys.push_back(SparseGrid::block_key(i, j, k));
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  s.grid.set_active_blocks(keys);
+  c.tables.resize(list.size());
+  for (size_t bi = 0; bi < list.size(); ++bi) {
+    const Bucket& b = list[bi];
+    int first[3];
+    for (int a = 0; a < 3; ++a) first[a] = first_table_block(b.coord[a]);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k)
+          c.tables[bi][(i * 4 + j) * 4 + k] = s.grid.find(first[0] + i, first[1] + j, first[2] + k);
+  }
+  if constexpr (has_smoothed_gradient<Shape>::value) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
+  clear_grid(s.grid);
+  s.grid_holds_velocity = false;
+  c.tallies.assign(list.size(), BucketTally{});
+  c.run_tallies.assign(s.buckets.runs().size(), RunTally{});
+}
+
+template <class Shape, class Mode>
+void scatter(SolverState& s, StepContext& c) {
+  const auto& list = s.buckets.buckets();
+  constexpr bool nodal_stress = Mode::force && has_grid_smoothed_gradient<Shape>::value;
+  if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
+  for (const auto& colour : s.buckets.colours()) {
+    // Buckets of one colour are two buckets apart: their boxes never overlap.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, colour.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+      BucketBuffer& buffer = c.buffers.local();
+      for (size_t k = r.begin(); k < r.end(); ++k) {
+        const Bucket& b = list[colour[k]];
+        buffer.attach(b);
+        buffer.ddmp_alpha = c.ddmp_partition();
+        clear_box(b, buffer);
+        if constexpr (nodal_stress) clear_ddmp_box(b, c.tables[colour[k]], buffer);
+        scatter_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(),
+                                    c.settings.cell_size, buffer);
+        add_box_to_grid(b, c.tables[colour[k]], s.grid, buffer);
+        if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.tables[colour[k]], buffer, c.ddmp_nodal);
+      }
+    });
+  }
+  c.domain.exchange_halo(s.grid);
+  if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
+    add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
+  }
+}
+
+template <class Shape, class Mode>
+void gather(SolverState& s, StepContext& c, Real dt) {
+  const auto& list = s.buckets.buckets();
+  const Settings& st = c.settings;
+  const GatherParameters parameters{st.cell_size, dt, st.flip_blend, st.gravity, st.min_jacobian};
+  constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && has_grid_smoothed_gradient<Shape>::value;
+  if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(s.grid, Mode::gradient_lane, st.cell_size, c.ddmp_nodal);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+    BucketBuffer& buffer = c.buffers.local();
+    for (size_t bi = r.begin(); bi < r.end(); ++bi) {
+      const Bucket& b = list[bi];
+      buffer.attach(b);
+      buffer.ddmp_alpha = c.ddmp_partition();
+      copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
+      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
+      gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,
+                                 buffer, c.tallies[bi], &c.run_tallies[b.run_begin]);
+    }
+  });
+  absorb_tallies(s, c, Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
+}
+
+// --- DDMP's small-mass nodes (ddmp_grid.hpp) --------------------------------------------
+
+// After a scatter: small-mass nodes hand lanes [first, first + count) on to their
+// neighbours (`find`: decide which nodes those are, from the mass just mapped).
+template <class Shape>
+void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool find) {
+  if constexpr (has_smoothed_gradient<Shape>::value) {
+    if (find) find_ddmp_small_mass_nodes(s.grid, ddmp_small_mass(s, c), c.ddmp_nodal);
+    move_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
+  }
+}
+// After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
+template <class Shape>
+void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
+  if constexpr (has_smoothed_gradient<Shape>::value)
+    spread_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
+}
+
+// --- The contact stage (rigid_contact.hpp) ----------------------------------------------
+
+// The contact forces at the start of the step into the force lanes, f_i += S_ip f_p, point
+// by point in order (deterministic). DDMP's weights are the linear ones (shape_ddmp.hpp),
+// so those points take the linear stencil.
+template <class Shape>
+void add_contact_forces(SolverState& s, StepContext& c) {
+  if (!c.penalty_contact) return;
+  update_contact_forces(s, c);
+  using Weights = std::conditional_t<has_smoothed_gradient<Shape>::value, LinearShape, Shape>;
+  constexpr int N = Weights::nodes_per_axis;
+  const Real h = c.settings.cell_size;
+  for (uint32_t p : c.contact.touching) {
+    const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
+    const Vec3& f = c.contact.force[p];
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k) {
+          const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+          if (!(w > 0)) continue;
+          // Active: the point's own scatter stencil reaches at least these nodes.
+          Real* lanes = s.grid.node(st.base[0] + i, st.base[1] + j, st.base[2] + k);
+          for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
+        }
+  }
+}
+
+// --- Schemes (Nairn 2003; Bardenhagen 2002) -------------------------------------------
+
+template <class Shape>
+void step_usl(SolverState& s, StepContext& c, Real dt) {
+  prepare_grid<Shape>(s, c);
+  scatter<Shape, ScatterAll>(s, c);
+  add_contact_forces<Shape>(s, c);
+  ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
+  update_nodes(s, c, dt);
+  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  gather<Shape, GatherAll>(s, c, dt);
+}
+
+template <class Shape>
+void step_musl(SolverState& s, StepContext& c, Real dt) {
+  prepare_grid<Shape>(s, c);
+  scatter<Shape, ScatterAll>(s, c);
+  add_contact_forces<Shape>(s, c);
+  ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
+  update_nodes(s, c, dt);
+  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  gather<Shape, GatherVelocity>(s, c, dt);
+  // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
+  clear_grid_lanes(s.grid, lane::force, 3);
+  scatter<Shape, ScatterRemap>(s, c);
+  ddmp_hand_on<Shape>(s, c, lane::force, 3, false);
+  grid_velocity_from_momentum(s.grid, lane::force, lane::force, c.body_info);
+  ddmp_read_back<Shape>(s, c, lane::force, 3);
+  impose_boundaries(s, c, lane::force);
+  gather<Shape, GatherStrainAndPosition>(s, c, dt);
+}
+
+template <class Shape>
+void step_usf(SolverState& s, StepContext& c, Real dt) {
+  prepare_grid<Shape>(s, c);
+  scatter<Shape, ScatterMomentum>(s, c);
+  ddmp_hand_on<Shape>(s, c, lane::mass, 4, true);
+  // Stress first, from the velocity at the start of the step (lanes 4–6).
+  grid_velocity_from_momentum(s.grid, lane::momentum, lane::force, c.body_info);
+  ddmp_read_back<Shape>(s, c, lane::force, 3);
+  impose_boundaries(s, c, lane::force);
+  gather<Shape, GatherStrain>(s, c, dt);
+  clear_grid_lanes(s.grid, lane::force, 3);
+  scatter<Shape, ScatterForce>(s, c);
+  add_contact_forces<Shape>(s, c);
+  ddmp_hand_on<Shape>(s, c, lane::force, 3, false);
+  update_nodes(s, c, dt);
+  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  gather<Shape, GatherMotion>(s, c, dt);
+}
+
+// One step of the settings' scheme with the settings' shape function, on the context's threads.
+inline void step_scheme(SolverState& s, StepContext& c, Real dt) {
+  c.arena.execute([&] {
+    with_solver_shape(c.settings, [&](auto shape) {
+      using Shape = decltype(shape);
+      switch (c.settings.scheme) {
+        case UpdateScheme::usl: step_usl<Shape>(s, c, dt); break;
+        case UpdateScheme::usf: step_usf<Shape>(s, c, dt); break;
+        case UpdateScheme::musl: step_musl<Shape>(s, c, dt); break;
+      }
+    });
+  });
+}
+
+}  // namespace latmpm::mpm

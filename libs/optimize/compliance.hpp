@@ -1,0 +1,42 @@
+// The compliance of a multi-density design and its sensitivity, paper C Sec. 3.2-3.3: the
+// active quadrature points become the material points of a static MPM problem
+// (libs/statics: narrow band of grid nodes, linear shape functions as in Eq. 29-31), each
+// with Young's modulus E_q = E_min + ρ_q^p (E − E_min) (SIMP-like power, Sec. 3.3), solved
+// in one Newton step (linear elasticity). The compliance is the elastic potential of
+// Eq. (25), C = Σ_q V_q ψ(F_q; E_q) = ½ fᵀu at equilibrium, and its sensitivity the closed
+// form of Eq. (21)-(22): ∂C/∂ρ_q = −V_q (∂E_q/∂ρ_q / E) ψ(F_q; E).
+// Inactive points (outside the narrow band) carry no material and no unknowns.
+#pragma once
+#include <vector>
+
+#include "optimize/design_grid.hpp"
+#include "optimize/load_case.hpp"
+
+namespace latmpm::optimize {
+
+struct SimpMaterial {
+  Real young_modulus = 0;   // E of the solid, Pa
+  Real poisson_ratio = 0;   // ν
+  Real penalty = 3;         // p
+  Real weak_ratio = 0;      // E_min / E: 0 for the narrow band, 1e-9 for weak-material fill
+
+  Real modulus(Real rho) const;             // E_q, Pa
+  Real modulus_derivative(Real rho) const;  // ∂E_q/∂ρ_q, Pa
+};
+
+struct ComplianceResult {
+  Real compliance = 0;          // C, J
+  Real external_work = 0;       // ½ fᵀu, J (equals C at equilibrium)
+  std::vector<Real> gradient;   // ∂C/∂ρ_q per quadrature point (0 where inactive), J
+  std::vector<Vec3> point_displacement;  // u at the active points (0 where inactive), m
+  size_t unknowns = 0;          // free displacement components of the solve
+  size_t active_points = 0;
+};
+
+// density: ρ_q per quadrature point of `grid`; active: which points are simulated (every
+// loaded point must be active). Throws NumericalError when the solve fails.
+ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<Real>& density,
+                                     const std::vector<char>& active, const LoadCase& load_case,
+                                     const SimpMaterial& material);
+
+}  // namespace latmpm::optimize

@@ -1,0 +1,38 @@
+// LETO's design variables, paper C Sec. 3.1 and 4.1: per carrier particle its density ρ_c
+// (bounds [0, 1], step ≤ 0.5 per iteration) and its position (in-plane components when
+// planar; bounds: the design domain; step ≤ 2 cells per iteration), mapped to the
+// quadrature densities by CarrierTransfer. x = [ρ_1 … ρ_N, x_1 … x_N (d each)].
+#pragma once
+#include "optimize/carrier_transfer.hpp"
+#include "optimize/parameterisation.hpp"
+
+namespace latmpm::optimize {
+
+struct LetoSettings {
+  Real kernel_radius_cells = 1.5;  // H / h
+  Real clamp_knee = 0.9;           // where the smooth clamp leaves the identity
+  Real density_move = 0.5;         // paper C Sec. 4.1
+  Real carrier_density_max = 2;    // upper bound of ρ_c (the clamp keeps every ρ_q ≤ 1)
+  Real position_move_cells = 0.5;  // paper C Sec. 4.1 says 2 (with adaptive asymptotes; docs/paper-c.md)
+};
+
+class LetoDesign final : public Parameterisation {
+ public:
+  LetoDesign(const DesignGrid& grid, const LetoSettings& settings, Real volume_fraction);
+  std::string name() const override { return "leto"; }
+  std::vector<Real> initial() const override;
+  void bounds(std::vector<Real>& lower, std::vector<Real>& upper, std::vector<Real>& move) const override;
+  void densities(const std::vector<Real>& x, std::vector<Real>& density) override;
+  std::vector<Real> pull_back(const std::vector<Real>& x, const std::vector<Real>& d_density) const override;
+
+  Carriers carriers(const std::vector<Real>& x) const;
+
+ private:
+  DesignGrid grid_;
+  LetoSettings settings_;
+  CarrierTransfer transfer_;
+  Carriers initial_;
+  std::vector<Real> kernel_sum_;  // of the last densities() call
+};
+
+}  // namespace latmpm::optimize

@@ -1,0 +1,41 @@
+// Supports and loads of an optimisation problem, in world units so that the same load case
+// applies on the optimisation grid and on the refined evaluation grid (paper C Sec. 4.2).
+//   support: grid nodes inside a box are held (per component);
+//   load: a total force spread equally over the quadrature points inside a box (the paper's
+//         nodal loads become loads on the points around the node: the static solver takes
+//         point forces, and points keep the load on material at every resolution).
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "optimize/design_grid.hpp"
+
+namespace latmpm::optimize {
+
+struct Box {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // m
+  bool contains(const Vec3& x) const { return (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all(); }
+};
+
+struct Support {
+  Box box;
+  std::array<bool, 3> held{true, true, true};  // x, y, z components
+  std::string name;
+};
+
+struct Load {
+  Box box;
+  Vec3 force = Vec3::Zero();  // total, N
+  std::string name;
+};
+
+struct LoadCase {
+  std::vector<Support> supports;
+  std::vector<Load> loads;
+};
+
+// Points of `grid` inside each load's box (one list per load).
+std::vector<std::vector<size_t>> loaded_points(const DesignGrid& grid, const LoadCase& load_case);
+
+}  // namespace latmpm::optimize

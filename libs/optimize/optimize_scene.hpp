@@ -1,0 +1,40 @@
+// The input of latmpm-optimize: a TOML scene (docs/paper-c.md lists every key) with the
+// design domain, material, supports, loads, the optimiser and its two methods (LETO and
+// the SIMP baseline), read the way libs/scene reads simulation scenes: every dimensional
+// value with its unit, unknown keys refused, every error one line naming file:line and key
+// (InputError, exit status 2), defaults written back into the resolved document.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "optimize/compliance.hpp"
+#include "optimize/leto_design.hpp"
+#include "optimize/load_case.hpp"
+#include "optimize/optimisation.hpp"
+#include "optimize/simp_design.hpp"
+
+namespace latmpm::optimize {
+
+struct OptimizeScene {
+  std::string source;          // the scene file
+  std::string resolved_toml;   // with defaults and --set overrides applied
+  DesignGrid grid;
+  SimpMaterial material;
+  LoadCase load_case;
+  OptimisationSettings settings;  // band: LETO's narrow band schedule
+  std::vector<std::string> methods;  // "leto", "simp", in the order given
+  LetoSettings leto;
+  int correction_slack = 4;    // lattice steps (connectivity correction), < 0: off
+  Real leto_binarise = 0.9;    // paper C Sec. 4.2
+  SimpSettings simp;
+  Real simp_binarise = 0.5;
+  int simp_max_iterations = 0;  // 0: optimize.max_iterations
+  int refine = 2;              // evaluation grid: cell / refine (paper C: 2)
+  bool evaluate_refined = true;
+};
+
+OptimizeScene read_optimize_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+OptimizeScene parse_optimize_scene(const std::string& text, const std::string& name,
+                                   const std::vector<std::string>& overrides = {});
+
+}  // namespace latmpm::optimize
