@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -91,9 +90,9 @@ int main(int argc, char** argv) {
   int cells = 40, steps = 20, threads = 0;
   std::vector<std::string> shapes = {"linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp"};
   std::string scheme = "usl";
-  bool ddmp_on_grid = true;
+  bool ddmp_on_grid = true;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
   bool digest = false;
-  std::string dump;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
+  std::string dump;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--cells") cells = std::atoi(value.c_str());
