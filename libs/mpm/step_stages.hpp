@@ -271,25 +271,26 @@ void add_contact_forces(SolverState& s, StepContext& c) {
 
 // --- Schemes (Nairn 2003; Bardenhagen 2002) -------------------------------------------
 
+// The first half of USL and MUSL: mass, momentum and force to the grid, the nodes advanced.
 template <class Shape>
-void step_usl(SolverState& s, StepContext& c, Real dt) {
+void scatter_all_and_update_nodes(SolverState& s, StepContext& c, Real dt) {
   prepare_grid<Shape>(s, c);
   scatter<Shape, ScatterAll>(s, c);
   add_contact_forces<Shape>(s, c);
   ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
   update_nodes(s, c, dt);
   ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+}
+
+template <class Shape>
+void step_usl(SolverState& s, StepContext& c, Real dt) {
+  scatter_all_and_update_nodes<Shape>(s, c, dt);
   gather<Shape, GatherAll>(s, c, dt);
 }
 
 template <class Shape>
 void step_musl(SolverState& s, StepContext& c, Real dt) {
-  prepare_grid<Shape>(s, c);
-  scatter<Shape, ScatterAll>(s, c);
-  add_contact_forces<Shape>(s, c);
-  ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
-  update_nodes(s, c, dt);
-  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  scatter_all_and_update_nodes<Shape>(s, c, dt);
   gather<Shape, GatherVelocity>(s, c, dt);
   // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
   clear_grid_lanes(s.grid, lane::force, 3);
