@@ -2,6 +2,7 @@
 // live in linear_elastic.hpp, neo_hookean.hpp and j2_material.hpp.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "mpm/real.hpp"
 
@@ -32,6 +33,7 @@ struct MaterialParameters {
 
 // "linear_elastic", "neo_hookean", "j2".
 std::string to_string(MaterialKind kind);
+std::vector<std::string> material_kind_names();  // names.cpp
 MaterialKind parse_material_kind(const std::string& name, const std::string& where = "",
                                  const std::string& field = "");
 

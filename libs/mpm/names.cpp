@@ -1,4 +1,6 @@
-// Scene names of the solver's enumerations, both ways.
+// Scene names of the solver's enumerations, both ways: one table per choice, which the scene
+// reader, its error messages and `latmpm-solve --list` all read. A new shape function, scheme
+// or material model is one row here.
 #include <array>
 #include <utility>
 
@@ -16,6 +18,13 @@ std::string name_of(Enum value, const std::array<std::pair<Enum, const char*>, N
   for (const auto& [e, n] : names)
     if (e == value) return n;
   return "?";
+}
+
+template <class Enum, size_t N>
+std::vector<std::string> names_in(const std::array<std::pair<Enum, const char*>, N>& names) {
+  std::vector<std::string> out;
+  for (const auto& [e, n] : names) out.emplace_back(n);
+  return out;
 }
 
 template <class Enum, size_t N>
@@ -62,6 +71,9 @@ MaterialKind parse_material_kind(const std::string& name, const std::string& whe
   return parse_name(name, material_names, where, field);
 }
 std::string to_string(BodyRole role) { return name_of(role, role_names); }
+std::vector<std::string> shape_function_names() { return names_in(shape_names); }
+std::vector<std::string> update_scheme_names() { return names_in(scheme_names); }
+std::vector<std::string> material_kind_names() { return names_in(material_names); }
 BodyRole parse_body_role(const std::string& name, const std::string& where, const std::string& field) {
   return parse_name(name, role_names, where, field);
 }

@@ -2,6 +2,7 @@
 // All dimensional values SI. docs/solver.md explains each choice.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "mpm/real.hpp"
 #include "mpm/shape_ddmp.hpp"
@@ -15,6 +16,7 @@ namespace latmpm::mpm {
 // momentum mapped back to the grid before the velocity gradient is taken.
 enum class UpdateScheme { usl, usf, musl };
 std::string to_string(UpdateScheme scheme);
+std::vector<std::string> update_scheme_names();  // names.cpp
 UpdateScheme parse_update_scheme(const std::string& name, const std::string& where = "",
                                  const std::string& field = "");
 

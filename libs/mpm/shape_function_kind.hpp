@@ -1,6 +1,7 @@
 // The closed set of shape functions the solver offers, and their names in scenes.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace latmpm::mpm {
 
@@ -16,6 +17,8 @@ enum class ShapeFunctionKind {
 
 // "linear", "ugimp", "cpgimp", "bspline2", "bspline3", "ddmp", "cpdi1".
 std::string to_string(ShapeFunctionKind kind);
+// Every shape function's name, in the kinds' order (names.cpp: the one table).
+std::vector<std::string> shape_function_names();
 // Inverse of to_string; throws InputError(where, field, ...) for an unknown name.
 ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where = "",
                                        const std::string& field = "");

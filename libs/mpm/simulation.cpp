@@ -80,11 +80,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     state_.particles.volume0[p] = points.volume[p];
     state_.particles.mass[p] = b.material.density * settings_.mass_scaling * points.volume[p];
     state_.particles.velocity[p] = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
-    // A point without a GIMP domain gets the voxelizer's, half a point spacing.
-    Vec3 half = points.half_size[p];
-    for (int a = 0; a < 3; ++a)
-      if (!(half[a] > 0)) half[a] = points.cell_size / (2 * points.ppc);
-    state_.particles.half_size0[p] = half;
+    state_.particles.half_size0[p] = points.domain_half_size(p);
     state_.particles.body[p] = points.body[p];
     state_.particles.id[p] = uint32_t(p);
     if (!b.hold_tag.empty() && points.tags.at(b.hold_tag)[p]) state_.particles.flags[p] |= Particles::held_flag;

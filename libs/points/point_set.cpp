@@ -1,5 +1,6 @@
 #include "points/point_set.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -10,6 +11,13 @@ int PointSet::body_index(const std::string& name) const {
   for (size_t i = 0; i < body_names.size(); ++i)
     if (body_names[i] == name) return static_cast<int>(i);
   return -1;
+}
+
+Eigen::Vector3d PointSet::domain_half_size(size_t p) const {
+  Eigen::Vector3d half = half_size[p];
+  for (int a = 0; a < 3; ++a)
+    if (!(half[a] > 0)) half[a] = cell_size / (2 * std::max(ppc, 1));
+  return half;
 }
 
 void PointSet::validate(const std::string& where) const {

@@ -39,6 +39,10 @@ struct PointSet {
   size_t size() const { return position.size(); }
   // Index of a body by name, or -1.
   int body_index(const std::string& name) const;
+  // Point p's GIMP domain half-lengths (m): half_size[p], each axis without one (zero) given
+  // the voxelizer's, half a point spacing h/(2 ppc). The explicit and the static solver both
+  // take it from here.
+  Eigen::Vector3d domain_half_size(size_t p) const;
   // Throws InputError(where, field, problem) if arrays disagree in length, values are not
   // finite, volumes are not positive, or body indices are out of range.
   void validate(const std::string& where) const;

@@ -10,8 +10,8 @@ namespace latmpm {
 mpm::Settings solver_settings(const Scene& scene, int threads) {
   mpm::Settings s;
   s.cell_size = scene.cell_size;
-  s.shape_function = mpm::parse_shape_function(to_string(scene.shape), scene.where, "grid.shape");
-  s.scheme = mpm::parse_update_scheme(to_string(scene.scheme), scene.where, "grid.scheme");
+  s.shape_function = scene.shape;
+  s.scheme = scene.scheme;
   s.flip_blend = scene.flip;
   s.ddmp_alpha_peak = scene.ddmp_alpha_peak;
   s.ddmp_alpha_exponent = scene.ddmp_alpha_exponent;
@@ -26,9 +26,9 @@ mpm::Settings solver_settings(const Scene& scene, int threads) {
   return s;
 }
 
-mpm::MaterialParameters solver_material(const MaterialSpec& m, const std::string& where, const std::string& field) {
+mpm::MaterialParameters solver_material(const MaterialSpec& m) {
   mpm::MaterialParameters p;
-  p.kind = mpm::parse_material_kind(to_string(m.model), where, field + ".model");
+  p.kind = m.model;
   p.young_modulus = m.youngs_modulus;
   p.poisson_ratio = m.poisson_ratio;
   p.density = m.density;
@@ -52,7 +52,7 @@ std::vector<mpm::BodySettings> solver_bodies(const Scene& scene) {
     if (!m)
       throw InputError(b.where, "bodies." + b.name + ".material",
                        "the scene has no deformable body to take a density from; give this body a material");
-    s.material = solver_material(*m, b.where, "bodies." + b.name + ".material");
+    s.material = solver_material(*m);
     s.velocity = b.velocity;
     s.hold_tag = b.hold_tag;
     s.hold_slip = b.hold_slip;

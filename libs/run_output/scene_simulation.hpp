@@ -16,8 +16,8 @@ mpm::Settings solver_settings(const Scene& scene, int threads);
 // density of the first deformable body (its motion is prescribed; the density only sets
 // the mass it reports).
 std::vector<mpm::BodySettings> solver_bodies(const Scene& scene);
-// A scene material as the solver's parameters; `where` and `field` name it in errors.
-mpm::MaterialParameters solver_material(const MaterialSpec& m, const std::string& where, const std::string& field);
+// A scene material as the solver's parameters (the scene already holds the solver's model kind).
+mpm::MaterialParameters solver_material(const MaterialSpec& m);
 // The scene's [rigid_bodies], in scene order.
 std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene);
 

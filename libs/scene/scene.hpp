@@ -1,8 +1,9 @@
 // A simulation scene: what latmpm-solve runs. Read from TOML (docs/scene.md has the full
 // key reference); every dimensional value carries its unit in the file and is SI here.
-// Reading is separate from building the simulation (pbrt's Create(params) then construct):
-// this header knows nothing of the solver, so the scene can be parsed, checked and echoed
-// without one.
+// Reading is separate from building the simulation (pbrt's Create(params) then construct).
+// The choices (shape function, update scheme, material model) are the solver's own
+// enumerations, named by the solver's one table per choice (mpm/names.cpp), and the
+// defaults the scene shares with the solver come from mpm::Settings.
 #pragma once
 #include <Eigen/Core>
 #include <cmath>
@@ -10,28 +11,22 @@
 #include <string>
 #include <vector>
 
+#include "mpm/material.hpp"
+#include "mpm/settings.hpp"
+#include "mpm/shape_function_kind.hpp"
+
 namespace latmpm {
 
 enum class BodyRole { deformable, fixed, driven };
-// Paper A's Eq. 5 in 3D as DDMP's α = peak · Π_axes [4 f (1 − f)]^exponent (mpm/shape_ddmp.hpp).
-inline const double default_ddmp_alpha_peak = 0.5 * std::pow(2.0, -16.0 / 14);
-inline const double default_ddmp_alpha_exponent = 2.0 / 7;
-
-enum class ShapeKind { linear, ugimp, cpgimp, bspline2, bspline3, ddmp, cpdi1 };
-enum class SchemeKind { usl, usf, musl };
-enum class MaterialModel { linear_elastic, neo_hookean, j2 };
 
 // The CFL number a scene runs at unless [time] sets cfl or dt: per shape function, the largest
 // of 0.3, 0.5, 0.6 ... 1.0 up to which paper A's column (cell 0.4 mm; for uGIMP also the QUICK
 // T2P30 lattice) finished with its load within 1 % of the run at 0.3, measured (docs/tradeoff.md, "Time step";
 // pipelines/tradeoff/cfl-matrix.sh). The step is dt = cfl · h / max_p(c_p + |v_p|), adapted
 // every step (mpm::Settings).
-double default_cfl(ShapeKind shape);
+double default_cfl(mpm::ShapeFunctionKind shape);
 
 const char* to_string(BodyRole role);
-const char* to_string(ShapeKind shape);
-const char* to_string(SchemeKind scheme);
-const char* to_string(MaterialModel model);
 
 // What a scene can choose (latmpm-solve --list CHOICE), one name a line, from the reader's own
 // tables: "shapes" (grid.shape), "schemes" (grid.scheme), "materials" (material.model),
@@ -64,7 +59,7 @@ struct CheckpointSpec {
 };
 
 struct MaterialSpec {
-  MaterialModel model = MaterialModel::linear_elastic;
+  mpm::MaterialKind model = mpm::MaterialKind::linear_elastic;
   double youngs_modulus = 0;  // Pa
   double poisson_ratio = 0;
   double density = 0;  // kg/m³ as given; mass scaling is applied by the solver set-up
@@ -126,16 +121,17 @@ struct Scene {
   long max_steps = 0;  // 0: no limit
 
   double cell_size = 0;  // m; 0 = take the point files' cell size
-  ShapeKind shape = ShapeKind::ugimp;
-  SchemeKind scheme = SchemeKind::usl;
-  double flip = 0.99;  // FLIP fraction of the velocity update (1 = pure FLIP, 0 = PIC)
+  mpm::ShapeFunctionKind shape = mpm::ShapeFunctionKind::ugimp;
+  mpm::UpdateScheme scheme = mpm::UpdateScheme::usl;
+  double flip = mpm::Settings{}.flip_blend;  // FLIP fraction of the velocity update (1 = pure FLIP, 0 = PIC)
   // DDMP partition function α: value at the cell centre and per-axis exponent
   // (mpm::Settings); the defaults are paper A's Eq. 5 in 3D.
-  double ddmp_alpha_peak = default_ddmp_alpha_peak;
-  double ddmp_alpha_exponent = default_ddmp_alpha_exponent;
-  bool ddmp_on_grid = true;            // DDMP's smoothed gradient on the grid (mpm::Settings)
+  double ddmp_alpha_peak = mpm::Settings{}.ddmp_alpha_peak;
+  double ddmp_alpha_exponent = mpm::Settings{}.ddmp_alpha_exponent;
+  bool ddmp_on_grid = mpm::Settings{}.ddmp_on_grid;  // DDMP's smoothed gradient on the grid
 
-  double cfl = 0.3;      // used when dt == 0; read: default_cfl(shape)
+  // Used when dt == 0; read: default_cfl(shape), the shape function's measured limit.
+  double cfl = 0.3;
   double dt = 0;         // s, fixed step when > 0
   double mass_scaling = 1;  // multiplies every deformable body's density (paper A Sec. 4: 6)
   // [time] quasi_static = { load_error = 0.03 }: mass_scaling picked by the quasi-static mode

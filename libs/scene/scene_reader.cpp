@@ -31,11 +31,6 @@ std::vector<std::string> names_of(const Enum (&values)[N]) {
 }
 
 constexpr BodyRole all_roles[] = {BodyRole::deformable, BodyRole::fixed, BodyRole::driven};
-constexpr ShapeKind all_shapes[] = {ShapeKind::linear, ShapeKind::ugimp, ShapeKind::cpgimp,
-                                    ShapeKind::bspline2, ShapeKind::bspline3, ShapeKind::ddmp,
-                                    ShapeKind::cpdi1};
-constexpr SchemeKind all_schemes[] = {SchemeKind::usl, SchemeKind::usf, SchemeKind::musl};
-constexpr MaterialModel all_models[] = {MaterialModel::linear_elastic, MaterialModel::neo_hookean, MaterialModel::j2};
 // A body of the point files that the scene leaves out (Scene::omitted_bodies).
 const std::string omitted_role = "omitted";
 const std::vector<std::string> rigid_motions = {"driven", "free", "fixed"};
@@ -61,20 +56,21 @@ void read_run(TableReader run, Scene& s) {
 void read_grid(TableReader grid, Scene& s) {
   s.cell_size = grid.quantity("cell", dimension::length);
   if (!(s.cell_size > 0)) grid.fail("cell", "must be positive");
-  s.shape = enum_from(grid.choice("shape", names_of(all_shapes), "ugimp"), all_shapes);
+  const mpm::Settings defaults;  // the defaults the scene shares with the solver
+  s.shape = mpm::parse_shape_function(grid.choice("shape", mpm::shape_function_names(), "ugimp"));
   // Linear shapes keep an O(1/h) gradient at a node that a particle entering an empty cell
   // has just given a tiny mass: USL then inverts that particle (measured: the tiny column at
   // step 1905). MUSL's remapped nodal velocity stays bounded, so it is their default
   // (docs/scene.md). DDMP hands such nodes on to their neighbours and runs USL, as the paper.
-  const bool remap = s.shape == ShapeKind::linear;
-  s.scheme = enum_from(grid.choice("scheme", names_of(all_schemes), remap ? "musl" : "usl"), all_schemes);
-  s.flip = grid.number("flip", 0.99);
+  const bool remap = s.shape == mpm::ShapeFunctionKind::linear;
+  s.scheme = mpm::parse_update_scheme(grid.choice("scheme", mpm::update_scheme_names(), remap ? "musl" : "usl"));
+  s.flip = grid.number("flip", defaults.flip_blend);
   if (s.flip < 0 || s.flip > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
-  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", default_ddmp_alpha_peak);
+  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", defaults.ddmp_alpha_peak);
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
-  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", default_ddmp_alpha_exponent);
+  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", defaults.ddmp_alpha_exponent);
   if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
-  s.ddmp_on_grid = grid.boolean("ddmp_on_grid", true);
+  s.ddmp_on_grid = grid.boolean("ddmp_on_grid", defaults.ddmp_on_grid);
   grid.finish();
 }
 
@@ -126,14 +122,14 @@ void read_points(std::vector<TableReader> files, const std::string& directory, S
 
 MaterialSpec read_material(TableReader m) {
   MaterialSpec spec;
-  spec.model = enum_from(m.choice("model", names_of(all_models), "linear_elastic"), all_models);
+  spec.model = mpm::parse_material_kind(m.choice("model", mpm::material_kind_names(), "linear_elastic"));
   spec.youngs_modulus = m.quantity("E", dimension::pressure);
   if (!(spec.youngs_modulus > 0)) m.fail("E", "must be positive");
   spec.poisson_ratio = m.number("nu");
   if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5)) m.fail("nu", "must lie in (-1, 0.5)");
   spec.density = m.quantity("density", dimension::density);
   if (!(spec.density > 0)) m.fail("density", "must be positive");
-  if (spec.model == MaterialModel::j2) {  // paper B Eq. 10; the other models refuse these keys
+  if (spec.model == mpm::MaterialKind::j2) {  // paper B Eq. 10; the other models refuse these keys
     spec.initial_yield = m.quantity("y0", dimension::pressure);
     if (!(spec.initial_yield > 0)) m.fail("y0", "must be positive");
     spec.saturation_yield = m.has("y_inf") ? m.quantity("y_inf", dimension::pressure) : spec.initial_yield;
@@ -326,9 +322,9 @@ void check_consistency(const Scene& s) {
 }  // namespace
 
 std::vector<std::string> scene_choice_names(const std::string& choice) {
-  if (choice == "shapes") return names_of(all_shapes);
-  if (choice == "schemes") return names_of(all_schemes);
-  if (choice == "materials") return names_of(all_models);
+  if (choice == "shapes") return mpm::shape_function_names();
+  if (choice == "schemes") return mpm::update_scheme_names();
+  if (choice == "materials") return mpm::material_kind_names();
   if (choice != "boundaries") return {};
   std::vector<std::string> names;
   for (BodyRole role : all_roles)
@@ -339,7 +335,8 @@ std::vector<std::string> scene_choice_names(const std::string& choice) {
   return names;
 }
 
-double default_cfl(ShapeKind shape) {
+double default_cfl(mpm::ShapeFunctionKind shape) {
+  using ShapeKind = mpm::ShapeFunctionKind;
   switch (shape) {
     case ShapeKind::linear: return 0.3;    // MUSL; at 0.5 the column's load moved 2.9 %, at 0.8 it failed
     case ShapeKind::ugimp: return 0.5;     // column: 0.6 moved the load 66 %, 0.7 failed; lattice: 0.7 failed
@@ -347,6 +344,7 @@ double default_cfl(ShapeKind shape) {
     case ShapeKind::bspline2: return 0.8;  // column: 0.9 failed
     case ShapeKind::bspline3: return 1.0;  // column: within 0.2 % up to 1.0
     case ShapeKind::ddmp: return 0.5;      // column: 0.6 moved the load 1.5 %, 0.7 failed
+    case ShapeKind::cpdi1: return 0.3;     // not measured: the conservative value
   }
   return 0.3;
 }
@@ -356,34 +354,6 @@ const char* to_string(BodyRole role) {
     case BodyRole::deformable: return "deformable";
     case BodyRole::fixed: return "fixed";
     case BodyRole::driven: return "driven";
-  }
-  return "?";
-}
-const char* to_string(ShapeKind shape) {
-  switch (shape) {
-    case ShapeKind::linear: return "linear";
-    case ShapeKind::ugimp: return "ugimp";
-    case ShapeKind::cpgimp: return "cpgimp";
-    case ShapeKind::bspline2: return "bspline2";
-    case ShapeKind::bspline3: return "bspline3";
-    case ShapeKind::ddmp: return "ddmp";
-    case ShapeKind::cpdi1: return "cpdi1";
-  }
-  return "?";
-}
-const char* to_string(SchemeKind scheme) {
-  switch (scheme) {
-    case SchemeKind::usl: return "usl";
-    case SchemeKind::usf: return "usf";
-    case SchemeKind::musl: return "musl";
-  }
-  return "?";
-}
-const char* to_string(MaterialModel model) {
-  switch (model) {
-    case MaterialModel::linear_elastic: return "linear_elastic";
-    case MaterialModel::neo_hookean: return "neo_hookean";
-    case MaterialModel::j2: return "j2";
   }
   return "?";
 }

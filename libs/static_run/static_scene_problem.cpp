@@ -15,7 +15,7 @@ namespace {
 // a model with history (J2) has no potential to minimise, so it is refused, not replaced.
 mpm::MaterialParameters static_material(const BodySpec& body) {
   const std::string field = "bodies." + body.name + ".material";
-  const mpm::MaterialParameters p = solver_material(body.material, body.where, field);
+  const mpm::MaterialParameters p = solver_material(body.material);
   if (p.kind != mpm::MaterialKind::linear_elastic && p.kind != mpm::MaterialKind::neo_hookean)
     throw InputError(body.where, field + ".model",
                      std::string("the static solver has no energy for \"") + to_string(body.material.model) +
@@ -31,11 +31,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
                        "the static solver has no free bodies (no inertia): use driven or fixed");
   StaticSceneProblem out;
   out.half_size.resize(points.size());
-  for (size_t p = 0; p < points.size(); ++p) {
-    out.half_size[p] = points.half_size[p];
-    for (int a = 0; a < 3; ++a)
-      if (!(out.half_size[p][a] > 0)) out.half_size[p][a] = points.cell_size / (2 * std::max(points.ppc, 1));
-  }
+  for (size_t p = 0; p < points.size(); ++p) out.half_size[p] = points.domain_half_size(p);
   // Material points and their energies (one per deformable body).
   std::vector<statics::Vec3> X, half;
   std::vector<statics::Real> volume;
@@ -67,7 +63,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
     volume.push_back(points.volume[p]);
     material.push_back(uint16_t(e));
   }
-  const mpm::ShapeFunctionKind shape = mpm::parse_shape_function(to_string(scene.shape), scene.where, "grid.shape");
+  const mpm::ShapeFunctionKind shape = scene.shape;
   out.problem = std::make_unique<statics::StaticProblem>(statics::build_narrow_band(X, half, scene.cell_size, shape),
                                                          std::move(volume), std::move(material), std::move(energies));
 

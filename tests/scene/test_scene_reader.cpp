@@ -62,7 +62,7 @@ TEST_CASE("A scene's quantities arrive in SI units", "[scene]") {
   CHECK(s.end.kind == EndCondition::plate_displacement);
   CHECK(s.end.value == Approx(2e-3));
   CHECK(s.cell_size == Approx(4e-4));
-  CHECK(s.shape == ShapeKind::linear);
+  CHECK(s.shape == mpm::ShapeFunctionKind::linear);
   CHECK(s.cfl == 0.25);
   CHECK(s.dt == 0);
   CHECK(s.mass_scaling == 6);
@@ -83,9 +83,9 @@ TEST_CASE("Defaults are documented in the resolved scene, which reads back to th
   Scene s = parse(base_scene);
   // The base scene's linear shapes default to MUSL (USL inverts particles entering empty
   // cells with them, docs/scene.md); GIMP and DDMP (small-mass nodes handed on) to USL.
-  CHECK(s.scheme == SchemeKind::musl);
-  CHECK(parse(base_scene, {"grid.shape=ugimp"}).scheme == SchemeKind::usl);
-  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == SchemeKind::usl);
+  CHECK(s.scheme == mpm::UpdateScheme::musl);
+  CHECK(parse(base_scene, {"grid.shape=ugimp"}).scheme == mpm::UpdateScheme::usl);
+  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == mpm::UpdateScheme::usl);
   CHECK(s.flip == 0.99);
   CHECK(s.gravity.isZero());
   CHECK(s.snapshot_every == 0);
@@ -173,7 +173,7 @@ TEST_CASE("Command-line overrides reach any field, the value read as TOML or els
                                "run.end={ time = \"3ms\" }", "output.snapshot_every=5"});
   CHECK(s.cell_size == Approx(2e-4));
   CHECK(s.mass_scaling == 1);
-  CHECK(s.scheme == SchemeKind::musl);
+  CHECK(s.scheme == mpm::UpdateScheme::musl);
   CHECK(s.bodies[1].velocity.z() == Approx(-0.05));
   CHECK(s.end.kind == EndCondition::time);
   CHECK(s.end.value == Approx(3e-3));
@@ -227,7 +227,7 @@ TEST_CASE("A j2 material reads paper B's hardening law with defaults, and other 
   const Scene full = parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
                                          "y0 = \"668MPa\", y_inf = \"887MPa\", eta = 51.6, h = \"285MPa\" }"));
   const MaterialSpec& m = full.body("column")->material;
-  CHECK(m.model == MaterialModel::j2);
+  CHECK(m.model == mpm::MaterialKind::j2);
   CHECK(m.initial_yield == Approx(668e6));
   CHECK(m.saturation_yield == Approx(887e6));
   CHECK(m.saturation_rate == Approx(51.6));
@@ -275,6 +275,6 @@ TEST_CASE("Without cfl or dt a scene runs at its shape function's measured cfl, 
     CHECK(parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent").cfl == s.cfl);
   }
   // uGIMP's measured limit is above the old fixed 0.3 (docs/tradeoff.md, "Time step").
-  CHECK(default_cfl(ShapeKind::ugimp) > 0.3);
+  CHECK(default_cfl(mpm::ShapeFunctionKind::ugimp) > 0.3);
   CHECK(parse(base_scene).cfl == 0.25);  // a given cfl wins
 }
