@@ -9,26 +9,28 @@ find_package(HDF5 REQUIRED COMPONENTS C)  # needs the C language enabled
 find_package(CGAL REQUIRED)
 find_package(Threads REQUIRED)
 
+# latmpm::NAME over a library and header directory found by hand, for packages that ship no
+# CMake package.
+function(latmpm_interface_target name library include_dir)
+  if(NOT TARGET latmpm_${name})
+    add_library(latmpm_${name} INTERFACE)
+    target_link_libraries(latmpm_${name} INTERFACE ${library})
+    target_include_directories(latmpm_${name} SYSTEM INTERFACE ${include_dir})
+    add_library(latmpm::${name} ALIAS latmpm_${name})
+  endif()
+endfunction()
+
 # gmsh ships no CMake package.
 find_library(GMSH_LIBRARY NAMES gmsh REQUIRED)
 find_path(GMSH_INCLUDE_DIR NAMES gmsh.h REQUIRED)
-if(NOT TARGET latmpm_gmsh)
-  add_library(latmpm_gmsh INTERFACE)
-  target_link_libraries(latmpm_gmsh INTERFACE ${GMSH_LIBRARY})
-  target_include_directories(latmpm_gmsh SYSTEM INTERFACE ${GMSH_INCLUDE_DIR})
-  add_library(latmpm::gmsh ALIAS latmpm_gmsh)
-endif()
+latmpm_interface_target(gmsh ${GMSH_LIBRARY} ${GMSH_INCLUDE_DIR})
 
-# SuiteSparse CHOLMOD (libsuitesparse-dev) for the static solver's sparse Cholesky, used
-# through Eigen's CholmodSupport; Debian's SuiteSparse 5 ships no CMake package.
+# SuiteSparse CHOLMOD (libsuitesparse-dev) for the static solver's sparse Cholesky, called
+# through its C interface (libs/statics/cholmod_direct); Debian's SuiteSparse 5 ships no CMake
+# package.
 find_library(CHOLMOD_LIBRARY NAMES cholmod REQUIRED)
 find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
-if(NOT TARGET latmpm_cholmod)
-  add_library(latmpm_cholmod INTERFACE)
-  target_link_libraries(latmpm_cholmod INTERFACE ${CHOLMOD_LIBRARY})
-  target_include_directories(latmpm_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
-  add_library(latmpm::cholmod ALIAS latmpm_cholmod)
-endif()
+latmpm_interface_target(cholmod ${CHOLMOD_LIBRARY} ${CHOLMOD_INCLUDE_DIR})
 
 if(NOT TARGET latmpm_hdf5)
   add_library(latmpm_hdf5 INTERFACE)

@@ -28,4 +28,18 @@ inline std::string scratch_points_dir(const std::string& label) {
   return d.string();
 }
 
+// Lines 1-9 of a test scene over that file: the run's end (line 2's table), a 1 mm grid and the
+// deformable body "column"; the caller adds its plate from line 10 on.
+inline std::string column_scene_head(const std::string& end) {
+  return "[run]\n"                                                             // 1
+         "end = " + end + "\n" +                                               // 2
+         "[grid]\n"                                                            // 3
+         "cell = \"1mm\"\n"                                                    // 4
+         "[[points]]\n"                                                        // 5
+         "file = \"pts.h5\"\n"                                                 // 6
+         "[bodies.column]\n"                                                   // 7
+         "role = \"deformable\"\n"                                             // 8
+         "material = { E = \"10MPa\", nu = 0.4, density = \"1050kg/m^3\" }\n";  // 9
+}
+
 }  // namespace latmpm::test

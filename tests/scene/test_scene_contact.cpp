@@ -35,15 +35,7 @@ std::string scene_with(const std::string& contact_line,
                                                          "normal = [0, 0, -1]\n"
                                                          "velocity = [\"0mm/s\", \"0mm/s\", \"-100mm/s\"]\n",
                        const std::string& end = "{ time = \"1ms\" }") {
-  return "[run]\n"                                                                 // 1
-         "end = " + end + "\n" +                                                   // 2
-         "[grid]\n"                                                                // 3
-         "cell = \"1mm\"\n"                                                        // 4
-         "[[points]]\n"                                                            // 5
-         "file = \"pts.h5\"\n"                                                     // 6
-         "[bodies.column]\n"                                                       // 7
-         "role = \"deformable\"\n"                                                 // 8
-         "material = { E = \"10MPa\", nu = 0.4, density = \"1050kg/m^3\" }\n"      // 9
+  return test::column_scene_head(end) +                                           // 1-9
          "[rigid_bodies.plate]\n"                                                  // 10
          + contact_line + "\n" +                                                   // 11
          motion_lines;                                                            // 12-16

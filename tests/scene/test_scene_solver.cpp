@@ -10,15 +10,7 @@ using namespace latmpm;
 
 namespace {
 std::string scene_with(const std::string& solver, const std::string& end = "{ plate_displacement = \"1mm\" }") {
-  return "[run]\n"                                                             // 1
-         "end = " + end + "\n" +                                               // 2
-         "[grid]\n"                                                            // 3
-         "cell = \"1mm\"\n"                                                    // 4
-         "[[points]]\n"                                                        // 5
-         "file = \"pts.h5\"\n"                                                 // 6
-         "[bodies.column]\n"                                                   // 7
-         "role = \"deformable\"\n"                                             // 8
-         "material = { E = \"10MPa\", nu = 0.4, density = \"1050kg/m^3\" }\n"  // 9
+  return test::column_scene_head(end) +                                        // 1-9
          "[bodies.plate]\n"                                                    // 10
          "role = \"driven\"\n"                                                 // 11
          "velocity = [\"0mm/s\", \"0mm/s\", \"-1mm/s\"]\n"                     // 12
