@@ -23,4 +23,11 @@ std::vector<std::string> shape_function_names();
 ShapeFunctionKind parse_shape_function(const std::string& name, const std::string& where = "",
                                        const std::string& field = "");
 
+// The CFL number a run takes unless it sets cfl or dt: per shape function, the largest of 0.3,
+// 0.5, 0.6 ... 1.0 up to which paper A's column (cell 0.4 mm; for uGIMP also the QUICK T2P30
+// lattice) finished with its load within 1 % of the run at 0.3, measured (docs/tradeoff.md,
+// "Time step"; pipelines/tradeoff/cfl-matrix.sh). The step is dt = cfl · h / max_p(c_p + |v_p|),
+// adapted every step (Settings).
+double default_cfl(ShapeFunctionKind shape);
+
 }  // namespace latmpm::mpm

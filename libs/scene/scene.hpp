@@ -19,13 +19,6 @@ namespace latmpm {
 
 enum class BodyRole { deformable, fixed, driven };
 
-// The CFL number a scene runs at unless [time] sets cfl or dt: per shape function, the largest
-// of 0.3, 0.5, 0.6 ... 1.0 up to which paper A's column (cell 0.4 mm; for uGIMP also the QUICK
-// T2P30 lattice) finished with its load within 1 % of the run at 0.3, measured (docs/tradeoff.md, "Time step";
-// pipelines/tradeoff/cfl-matrix.sh). The step is dt = cfl · h / max_p(c_p + |v_p|), adapted
-// every step (mpm::Settings).
-double default_cfl(mpm::ShapeFunctionKind shape);
-
 const char* to_string(BodyRole role);
 
 // What a scene can choose (latmpm-solve --list CHOICE), one name a line, from the reader's own
@@ -130,7 +123,7 @@ struct Scene {
   double ddmp_alpha_exponent = mpm::Settings{}.ddmp_alpha_exponent;
   bool ddmp_on_grid = mpm::Settings{}.ddmp_on_grid;  // DDMP's smoothed gradient on the grid
 
-  // Used when dt == 0; read: default_cfl(shape), the shape function's measured limit.
+  // Used when dt == 0; read: mpm::default_cfl(shape), the shape function's measured limit.
   double cfl = 0.3;
   double dt = 0;         // s, fixed step when > 0
   double mass_scaling = 1;  // multiplies every deformable body's density (paper A Sec. 4: 6)

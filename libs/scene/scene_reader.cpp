@@ -82,7 +82,7 @@ void read_time(TableReader time_table, Scene& s) {
     s.dt = time->quantity("dt", dimension::time);
     if (!(s.dt > 0)) time->fail("dt", "must be positive");
   } else {
-    s.cfl = time->number("cfl", default_cfl(s.shape));
+    s.cfl = time->number("cfl", mpm::default_cfl(s.shape));
     if (!(s.cfl > 0) || s.cfl > 1) time->fail("cfl", "must lie in (0, 1]");
   }
   if (auto qs = time->optional_table("quasi_static")) {
@@ -333,20 +333,6 @@ std::vector<std::string> scene_choice_names(const std::string& choice) {
   for (const auto& m : rigid_shapes) names.push_back("rigid_bodies.shape=" + m);
   for (const auto& m : rigid_contacts) names.push_back("rigid_bodies.contact.model=" + m);
   return names;
-}
-
-double default_cfl(mpm::ShapeFunctionKind shape) {
-  using ShapeKind = mpm::ShapeFunctionKind;
-  switch (shape) {
-    case ShapeKind::linear: return 0.3;    // MUSL; at 0.5 the column's load moved 2.9 %, at 0.8 it failed
-    case ShapeKind::ugimp: return 0.5;     // column: 0.6 moved the load 66 %, 0.7 failed; lattice: 0.7 failed
-    case ShapeKind::cpgimp: return 0.6;    // column: 0.7 failed
-    case ShapeKind::bspline2: return 0.8;  // column: 0.9 failed
-    case ShapeKind::bspline3: return 1.0;  // column: within 0.2 % up to 1.0
-    case ShapeKind::ddmp: return 0.5;      // column: 0.6 moved the load 1.5 %, 0.7 failed
-    case ShapeKind::cpdi1: return 0.3;     // not measured: the conservative value
-  }
-  return 0.3;
 }
 
 const char* to_string(BodyRole role) {
