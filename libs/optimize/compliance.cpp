@@ -17,6 +17,27 @@ Real SimpMaterial::modulus_derivative(Real rho) const {
   return penalty * std::pow(rho, penalty - 1) * (young_modulus - Emin);
 }
 
+namespace {
+
+using namespace latmpm::statics;
+
+// The adjoint of Eq. (19) for a nonlinear energy: K_T(u) λ = f on the free unknowns (λ = 0
+// where prescribed), K_T the true (unprojected) tangent at equilibrium.
+Vector adjoint_displacement(StaticProblem& problem, const Dirichlet& dirichlet, const Vector& u, SparseSolver& solver) {
+  problem.assemble_hessian(u, false);
+  SparseMatrix& K = problem.hessian();
+  constrain_rows_and_columns(K, dirichlet.fixed, mean_diagonal(K));
+  Vector rhs = problem.external_force();
+  for (size_t i = 0; i < dirichlet.fixed.size(); ++i)
+    if (dirichlet.fixed[i]) rhs[Eigen::Index(i)] = 0;
+  if (!solver.factorize(K))
+    throw NumericalError("compliance: the tangent at equilibrium is not positive definite (a buckled design): no adjoint");
+  LinearSolveStats stats;
+  return solver.solve(rhs, stats);
+}
+
+}  // namespace
+
 ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<Real>& density,
                                      const std::vector<char>& active, const LoadCase& load_case,
                                      const SimpMaterial& material) {
@@ -31,13 +52,14 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
     point_of.push_back(q);
     X.push_back(grid.position(q));
     half.push_back(Vec3::Constant(grid.spacing() / 2));
-    // ψ is linear in E for linear elasticity: E_q/E scales the point's volume (Eq. 25).
+    // ψ is linear in E (linear elastic and neo-Hookean alike, ν fixed): E_q/E scales the
+    // point's volume (Eq. 25).
     volume.push_back(V * material.modulus(density[q]) / material.young_modulus);
   }
   if (X.empty()) throw NumericalError("compliance: no active quadrature point");
 
   mpm::MaterialParameters solid;
-  solid.kind = mpm::MaterialKind::linear_elastic;
+  solid.kind = material.model;
   solid.young_modulus = material.young_modulus;
   solid.poisson_ratio = material.poisson_ratio;
   const ElasticEnergy energy = ElasticEnergy::from(solid);
@@ -71,25 +93,34 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   // Linear elasticity: one Newton step solves it; the projected Newton's diagonal shift
   // (docs/statics.md) holds a part the band leaves unsupported, whose residual then stays
   // at the shift's level: accepted up to 1e-4 (its huge compliance steers the optimiser
-  // back), anything worse is a failure.
+  // back), anything worse is a failure. Neo-Hookean: projected Newton from u = 0 under the
+  // whole load, to a tight tolerance (the adjoint below assumes equilibrium).
+  const bool linear = problem.is_quadratic();
   NewtonOptions options;
-  options.max_iterations = 10;  // iterative refinement where E_min = 1e-9 E makes K ill-conditioned
+  options.max_iterations = linear ? 10 : 100;  // linear: iterative refinement where E_min = 1e-9 E makes K ill-conditioned
+  if (!linear) options.tolerance = 1e-11;
   const NewtonReport report = solve_equilibrium(problem, dirichlet, u, solver, options);
-  if (!report.converged && !(report.iterations > 0 && report.residual.back() <= 1e-4))
+  if (!report.converged && !(linear && report.iterations > 0 && report.residual.back() <= 1e-4))
     throw NumericalError("compliance: static solve failed: " + report.failure);
+  const Vector adjoint = linear ? u : adjoint_displacement(problem, dirichlet, u, solver);
 
   ComplianceResult r;
   r.gradient.assign(n, 0);
   r.point_displacement.assign(n, Vec3::Zero());
   r.active_points = X.size();
   r.unknowns = problem.dof_count() - dirichlet.count();
+  r.newton_iterations = report.iterations;
   r.external_work = 0.5 * problem.external_force().dot(u);
   const std::vector<Mat3> F = problem.deformation_gradients(u);
   for (size_t p = 0; p < X.size(); ++p) {
     const size_t q = point_of[p];
     const Real psi = energy.density(F[p]);  // ψ(F_q; E), J/m³
     r.compliance += volume[p] * psi;
-    r.gradient[q] = -V * material.modulus_derivative(density[q]) / material.young_modulus * psi;
+    // P : ∇λ_q (= 2ψ for linear elasticity, where λ = u).
+    const Real work = linear ? 2 * psi
+                             : (energy.first_piola(F[p]).array() *
+                                (problem.deformation_gradient(p, adjoint) - Mat3::Identity()).array()).sum();
+    r.gradient[q] = V * material.modulus_derivative(density[q]) / material.young_modulus * (psi - work);
     Vec3 up = Vec3::Zero();
     for (uint32_t e = band.point_offset[p]; e < band.point_offset[p + 1]; ++e)
       up += band.entry_weight[e] * u.segment<3>(Eigen::Index(3 * band.entry_node[e]));
