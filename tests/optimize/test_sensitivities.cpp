@@ -96,6 +96,38 @@ TEST_CASE("LETO's adjoint compliance and volume gradients match finite differenc
   }
 }
 
+TEST_CASE("LETO's gradients through Eq. 38's sharpening match finite differences", "[optimize]") {
+  const DesignGrid g = test::small_grid(true);
+  const LoadCase lc = test::small_load_case(g);
+  LetoSettings settings;
+  settings.sharpen_end = 4;
+  LetoDesign design(g, settings, 0.5);
+  design.start_iteration(1000);  // β = 4
+  CHECK(design.continuation_done());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> density(0.2, 0.9), jitter(-0.4, 0.4);
+  std::vector<double> x = design.initial();
+  const size_t n = g.point_count();
+  for (size_t c = 0; c < n; ++c) x[c] = density(rng);
+  for (size_t j = n; j < x.size(); ++j) x[j] += jitter(rng) * g.spacing();
+  const Objective f{g, lc, test::small_material(1e-9), std::vector<char>(n, 1)};
+  check_gradients(design, f, x, {3, 17, 40, 77, 101}, 1e-6);
+  check_gradients(design, f, x, {n + 5, n + 30, n + 91}, 1e-9);
+}
+
+TEST_CASE("Eq. 38's sharpening keeps 0, 1/2 and 1, is flat at both ends and steepens with beta", "[optimize]") {
+  for (double beta : {1.01, 2.0, 10.0}) {
+    const Sharpening s{beta};
+    CHECK(s.value(0) == 0);
+    CHECK(s.value(1) == 1);
+    CHECK(s.value(0.5) == Approx(0.5));
+    CHECK(s.derivative(1e-9) < 1e-6 + (beta < 1.1 ? 2 : 0));
+    for (double r : {0.1, 0.3, 0.7}) CHECK(s.derivative(r) == Approx((s.value(r + 1e-6) - s.value(r - 1e-6)) / 2e-6).epsilon(1e-5));
+  }
+  CHECK(Sharpening{10}.value(0.4) < 0.02);
+  CHECK(Sharpening{1.01}.value(0.4) == Approx(0.4).epsilon(0.01));
+}
+
 TEST_CASE("SIMP's filtered and projected gradients match finite differences", "[optimize]") {
   const DesignGrid g = test::small_grid(true);
   const LoadCase lc = test::small_load_case(g);
