@@ -137,6 +137,9 @@ void read_leto(TableReader t, OptimizeScene& s) {
   if (l.sharpen_ramp < 1) t.fail("sharpen_ramp", "must be at least 1 (iterations)");
   s.correction_slack = int(t.integer("correction_slack", 2 * s.grid.per_cell));
   s.leto_binarise = t.number("binarise", 0.9);
+  s.leto_volume_fraction = t.number("volume_fraction", 0);
+  if (!(s.leto_volume_fraction == 0 || (s.leto_volume_fraction > 0 && s.leto_volume_fraction < 1)))
+    t.fail("volume_fraction", "must lie in (0, 1), or 0 for optimize.volume_fraction");
   t.finish();
 }
 
