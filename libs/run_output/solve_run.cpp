@@ -57,6 +57,7 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
     points_summary_ += "body " + b.name + " (omitted): its points are not simulated\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
                                                   solver_settings(scene_, options_.threads), scene_.where);
+  specimen_area_ = mpm::AverageStressForce::initial_cross_section(*simulation_, loading_axis(scene_));
   for (const auto& r : solver_rigid_bodies(scene_)) {
     simulation_->add_rigid_body(r);
     points_summary_ += "rigid body " + r.name + " (" + mpm::to_string(r.motion) + " " + mpm::to_string(r.shape) +
@@ -144,7 +145,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
            format_number("%g", axis.z()) + "), record area " + format_number("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
-  const SolverSeries series_row(sim, axis);
+  const SolverSeries series_row(sim, axis, specimen_area_);
   const auto columns = series_row.columns();
   std::vector<std::vector<double>> earlier_rows;
   if (options_.resume) {

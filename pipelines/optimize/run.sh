@@ -60,7 +60,9 @@ else
   run beam-2d-no-correction cantilever-2d.toml --set optimize.methods=leto --set leto.correction_slack=-1
   run beam-3d beam-3d.toml
   explicit_all beam-3d
-  examples="beam-2d beam-2d-no-correction michell-2d distributed-2d distributed-2d-no-band beam-3d"
+  run bridge-3d bridge-3d.toml
+  run beam-2d-neo-hookean cantilever-2d-neo-hookean.toml
+  examples="beam-2d beam-2d-no-correction michell-2d distributed-2d distributed-2d-no-band beam-3d bridge-3d beam-2d-neo-hookean"
 fi
 python3 "$src/pipelines/optimize/summary.py" "$out" $examples > "$out/summary.md.tmp"
 mv "$out/summary.md.tmp" "$out/summary.md"
