@@ -22,6 +22,12 @@ std::string to_string(LinearSolverKind kind) {
   return "?";
 }
 
+std::vector<std::string> linear_solver_names() {
+  std::vector<std::string> names;
+  for (const auto& [k, n] : solver_names) names.emplace_back(n);
+  return names;
+}
+
 LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where, const std::string& field) {
   for (const auto& [k, n] : solver_names)
     if (name == n) return k;

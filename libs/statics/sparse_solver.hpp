@@ -9,16 +9,10 @@
 
 #include "statics/band_matrix.hpp"
 #include "statics/static_problem.hpp"
+#include "statics/static_settings.hpp"  // LinearSolverKind
 
 namespace latmpm::statics {
 
-enum class LinearSolverKind { ldlt, cg, cholmod };
-
-// "ldlt", "cg", "cholmod".
-std::string to_string(LinearSolverKind kind);
-// Throws InputError(where, field, ...) for an unknown name.
-LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where = "",
-                                     const std::string& field = "");
 
 struct LinearSolveStats {
   int iterations = 0;             // CG iterations (1 for a direct solve)
