@@ -101,7 +101,7 @@ struct EndCondition {
 struct SolverSpec {
   enum Kind { explicit_dynamics, static_equilibrium } kind = explicit_dynamics;
   int increments = 20;                  // static: equilibrium steps to the end travel
-  std::string linear_solver = "cholmod";  // static: "cholmod", "ldlt" or "cg"
+  std::string linear_solver = "auto";  // static: "auto", "cholmod", "amg", "ldlt" or "cg"
   double tolerance = 1e-8;              // static: relative residual force of each increment
   bool check_stability = true;          // static: end the path at the first unstable equilibrium
   double stabilisation = 0.1;           // static: β of the affine stabilisation (× shear modulus)

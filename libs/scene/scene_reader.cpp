@@ -297,7 +297,7 @@ void read_solver(TableReader solver, Scene& s) {
   if (spec.kind == SolverSpec::static_equilibrium) {
     spec.increments = int(solver.integer("increments", 20));
     if (spec.increments < 1) solver.fail("increments", "must be at least 1");
-    spec.linear_solver = solver.choice("linear_solver", {"cholmod", "ldlt", "cg"}, "cholmod");
+    spec.linear_solver = solver.choice("linear_solver", {"auto", "cholmod", "amg", "ldlt", "cg"}, "auto");
     spec.tolerance = solver.number("tolerance", 1e-8);
     if (!(spec.tolerance > 0 && spec.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
     spec.check_stability = solver.boolean("check_stability", true);
