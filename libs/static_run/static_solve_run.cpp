@@ -131,12 +131,18 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
                              " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
                              std::to_string(pt.newton_iterations) + ", linear " +
-                             std::to_string(pt.linear_iterations) + ", residual " + format_number("%.2e", pt.residual) +
+                             std::to_string(pt.linear_iterations) + " (last residual " +
+                             format_number("%.1e", pt.linear_residual) + "), residual " + format_number("%.2e", pt.residual) +
                              ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
     log.line(line);
     if (progress) std::cerr << "latmpm-solve: " << line << "\n";
   };
-  statics::SparseSolver solver(solver_kind);
+  // Iterative solves (CG, AMG) to 1e-4 of the Newton tolerance: at 1e-2 of it a linear
+  // problem took two Newton steps instead of one (QUICK T2P30, docs/statics.md).
+  statics::SparseSolver solver(solver_kind, 1e-4 * scene.solver.statics.tolerance);
+  std::vector<statics::Vec3> node_positions(problem.band().node_count());  // the AMG's rigid-body modes
+  for (size_t n = 0; n < node_positions.size(); ++n) node_positions[n] = problem.band().node_position(n);
+  solver.set_node_positions(std::move(node_positions));
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
   log.line("linear solver: " + solver.describe());
   series.save();

@@ -11,9 +11,9 @@ namespace latmpm::statics {
 
 using mpm::Real;
 
-enum class LinearSolverKind { ldlt, cg, cholmod };
+enum class LinearSolverKind { ldlt, cg, cholmod, amg, automatic };
 
-// "ldlt", "cg", "cholmod" (sparse_solver.cpp: the one table).
+// "ldlt", "cg", "cholmod", "amg", "auto" (sparse_solver.cpp: the one table).
 std::string to_string(LinearSolverKind kind);
 std::vector<std::string> linear_solver_names();
 // Throws InputError(where, field, ...) for an unknown name.
@@ -22,7 +22,7 @@ LinearSolverKind parse_linear_solver(const std::string& name, const std::string&
 
 struct StaticSettings {
   int increments = 20;  // equilibrium steps to the end travel (displacement_control.hpp)
-  LinearSolverKind linear_solver = LinearSolverKind::cholmod;
+  LinearSolverKind linear_solver = LinearSolverKind::automatic;  // auto: CHOLMOD unless its factor is too big (sparse_solver.hpp)
   Real tolerance = 1e-8;  // relative residual force of each increment (NewtonOptions)
   bool check_stability = true;  // end the path at the first unstable equilibrium
   Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
