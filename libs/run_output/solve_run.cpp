@@ -40,10 +40,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& options)
     : scene_(std::move(scene)), provenance_(std::move(provenance)), options_(options) {
   PointSet points = load_scene_points(scene_, &provenance_);
-  if (std::abs(points.cell_size - scene_.cell_size) > 1e-9 * scene_.cell_size) {
+  if (std::abs(points.cell_size - scene_.settings.cell_size) > 1e-9 * scene_.settings.cell_size) {
     std::ostringstream note;
     note << "note: the points were made for a " << points.cell_size * 1e3 << " mm cell, the grid has "
-         << scene_.cell_size * 1e3 << " mm";
+         << scene_.settings.cell_size * 1e3 << " mm";
     points_summary_ += note.str() + "\n";
   }
   for (const std::string& warning : driven_body_warnings(scene_, points)) points_summary_ += warning + "\n";
@@ -129,16 +129,16 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   for (const auto& f : scene_.point_files) log.line("points: " + f.path);
   std::istringstream summary(points_summary_);
   for (std::string l; std::getline(summary, l);) log.line(l);
-  log.line("grid: cell " + format_number("%g", scene_.cell_size) + " m, shape " + to_string(scene_.shape) +
-           ", scheme " + to_string(scene_.scheme) + ", flip " + format_number("%g", scene_.flip));
+  log.line("grid: cell " + format_number("%g", scene_.settings.cell_size) + " m, shape " + to_string(scene_.settings.shape_function) +
+           ", scheme " + to_string(scene_.settings.scheme) + ", flip " + format_number("%g", scene_.settings.flip_blend));
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();
-  const double dt0 = scene_.dt > 0 ? scene_.dt : stable;
-  log.line("time: " + (scene_.dt > 0 ? "fixed dt " + format_number("%g", scene_.dt) + " s"
-                                     : "cfl " + format_number("%g", scene_.cfl)) +
+  const double dt0 = scene_.settings.fixed_time_step > 0 ? scene_.settings.fixed_time_step : stable;
+  log.line("time: " + (scene_.settings.fixed_time_step > 0 ? "fixed dt " + format_number("%g", scene_.settings.fixed_time_step) + " s"
+                                     : "cfl " + format_number("%g", scene_.settings.cfl)) +
            ", stable dt " + format_number("%.4g", stable) + " s at the start, mass scaling " +
-           format_number("%g", scene_.mass_scaling));
+           format_number("%g", scene_.settings.mass_scaling));
   log.line("end: t = " + format_number("%g", end) + " s, about " + format_number("%.0f", std::ceil(end / dt0)) +
            " steps" + (scene_.max_steps ? ", at most " + std::to_string(scene_.max_steps) : ""));
   log.line("loading axis: (" + format_number("%g", axis.x()) + ", " + format_number("%g", axis.y()) + ", " +
