@@ -7,6 +7,7 @@
 #include <map>
 
 #include "mpm/cpdi_particles.hpp"
+#include "mpm/gimp_domains.hpp"
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/step_stages.hpp"
@@ -124,6 +125,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
 
   if (settings_.shape_function == ShapeFunctionKind::cpdi1)
     set_cpdi_domains(state_.particles, points, bodies_, settings_.cell_size, where);
+  if (settings_.shape_function == ShapeFunctionKind::cpgimp && settings_.scheme == UpdateScheme::usl)
+    refuse_wide_cpgimp_domains(state_.particles, bodies_, settings_.cell_size, where);
 
   state_.diagnostics.body_displacement.assign(bodies_.size(), Vec3::Zero());
   state_.diagnostics.reaction.assign(bodies_.size(), Vec3::Zero());

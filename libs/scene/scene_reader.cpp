@@ -42,6 +42,8 @@ void read_run(TableReader run, Scene& s) {
 void read_settings_and_output(TableReader& root, Scene& s) {
   TableReader grid = root.table("grid"), time = root.table_or_empty("time"),
               gravity = root.table_or_empty("gravity"), out = root.table_or_empty("output");
+  // Before read(): it inserts record_tag's default, after which the key is always there.
+  if (out.has("record_tag")) s.record_where = out.where("record_tag");
   read(grid, time, gravity, out, s.settings);
   grid.finish();
   if (auto qs = time.optional_table("quasi_static")) {
@@ -58,7 +60,6 @@ void read_settings_and_output(TableReader& root, Scene& s) {
   if (s.series_every < 1) out.fail("series_every", "must be at least 1 (steps between rows)");
   s.snapshot_every = out.integer("snapshot_every", 0);
   if (s.snapshot_every < 0) out.fail("snapshot_every", "must be 0 (first and last only) or positive");
-  if (out.has("record_tag")) s.record_where = out.where("record_tag");
   out.finish();
 }
 

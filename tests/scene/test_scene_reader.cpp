@@ -90,6 +90,9 @@ TEST_CASE("Defaults are documented in the resolved scene, which reads back to th
   CHECK(s.settings.gravity.isZero());
   CHECK(s.snapshot_every == 0);
   CHECK(s.settings.record_tag == "record");
+  // The default tag is not the scene's request: point files without it are fine.
+  CHECK(s.record_where.empty());
+  CHECK_FALSE(parse(base_scene, {"output.record_tag=top"}).record_where.empty());
   CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'musl'") || Catch::Contains("scheme = \"musl\""));
   CHECK_THAT(s.resolved_toml, Catch::Contains("record_tag"));
 
