@@ -32,6 +32,14 @@ find_library(CHOLMOD_LIBRARY NAMES cholmod REQUIRED)
 find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 latmpm_interface_target(cholmod ${CHOLMOD_LIBRARY} ${CHOLMOD_INCLUDE_DIR})
 
+# hypre (libhypre-dev) for the static solver's AMG-preconditioned CG (libs/statics/hypre_amg);
+# an MPI library (OpenMPI, pulled in by libhypre-dev), run as one process. No CMake package.
+find_package(MPI REQUIRED COMPONENTS C)
+find_library(HYPRE_LIBRARY NAMES HYPRE REQUIRED)
+find_path(HYPRE_INCLUDE_DIR NAMES HYPRE.h PATH_SUFFIXES hypre REQUIRED)
+latmpm_interface_target(hypre ${HYPRE_LIBRARY} ${HYPRE_INCLUDE_DIR})
+target_link_libraries(latmpm_hypre INTERFACE MPI::MPI_C)
+
 if(NOT TARGET latmpm_hdf5)
   add_library(latmpm_hdf5 INTERFACE)
   target_link_libraries(latmpm_hdf5 INTERFACE ${HDF5_C_LIBRARIES})

@@ -7,6 +7,7 @@ packages=(
   libcgal-dev libeigen3-dev libopenvdb-dev libboost-iostreams-dev libtbb-dev
   libhdf5-dev hdf5-tools libgmsh-dev catch2 gnuplot-nox libtomlplusplus-dev python3
   libsuitesparse-dev libopenblas0-pthread libnlopt-dev
+  libhypre-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -24,7 +24,7 @@ struct BucketBuffer {
   static constexpr int stride_i = width * stride_j;
   static constexpr int ddmp_values = 9;  // DDMP on the grid: values per node in `ddmp`
 
-  std::vector<Real> data = std::vector<Real>(size_t(width) * width * width * lane::count);
+  NodeStorage data = NodeStorage(size_t(width) * width * width * lane::count);
   std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
   DdmpAlphaCache ddmp_alpha_cache;  // DDMP on the grid only: α per point for this pass

@@ -1,7 +1,9 @@
 #include "mpm/checkpoint_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/checked_read.hpp"
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 
@@ -63,7 +65,7 @@ void CheckpointWriter::integers(const std::string& name, const std::vector<int64
 template <class T>
 void CheckpointWriter::rows(const std::string& name, const std::vector<T>& values) {
   const size_t n = values.size();
-  if constexpr (std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t>)
+  if constexpr (std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t> || std::is_same_v<T, int64_t>)
     file_.write(path(name), values, {n});
   else if constexpr (std::is_same_v<T, uint32_t>)
     file_.write(path(name), std::vector<int64_t>(values.begin(), values.end()), {n});
@@ -89,6 +91,7 @@ CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group, bool
     : file_(file), group_(std::move(group)) {}
 
 CheckpointReader CheckpointReader::sub(const std::string& sub) const { return {file_, path(sub), true}; }
+CheckpointReader CheckpointReader::group(const std::string& group) const { return {file_, group, true}; }
 
 const std::string& CheckpointReader::file_path() const { return file_.path(); }
 
@@ -109,56 +112,58 @@ void CheckpointReader::expect_shape(const std::string& name, size_t count, int c
 }
 
 // Every real number of a checkpoint is a state the solver reached, so finite: a NaN or an
-// infinity is a corrupted file, refused with the dataset named before it is used.
-std::vector<double> CheckpointReader::finite_values(const std::string& name, std::vector<double> values) const {
-  for (double v : values)
-    if (!std::isfinite(v)) throw InputError(file_.path(), path(name), "holds a value that is not finite");
-  return values;
+// infinity is a corrupted file, refused with the dataset named (read_checked_doubles).
+double CheckpointReader::scalar(const std::string& name, ValueRange range) const {
+  expect_shape(name, 1, 1);
+  return read_checked_doubles(file_, path(name), {1}, range)[0];
 }
 
-double CheckpointReader::scalar(const std::string& name) const {
+int64_t CheckpointReader::integer(const std::string& name, int64_t min, int64_t max) const {
   expect_shape(name, 1, 1);
-  return finite_values(name, file_.read_doubles(path(name)))[0];
-}
-
-int64_t CheckpointReader::integer(const std::string& name) const {
-  expect_shape(name, 1, 1);
-  return file_.read_int64(path(name))[0];
+  return read_checked_integers(file_, path(name), {1}, min, max)[0];
 }
 
 std::vector<std::string> CheckpointReader::strings(const std::string& name) const {
   if (!has(name)) throw InputError(file_.path(), path(name), "missing from the checkpoint");
-  return file_.read_strings(path(name));
+  return read_checked_strings(file_, path(name));
 }
 
-std::vector<int64_t> CheckpointReader::integers(const std::string& name, size_t columns) const {
+std::vector<int64_t> CheckpointReader::integers(const std::string& name, size_t columns, int64_t min,
+                                                int64_t max) const {
   if (!has(name)) throw InputError(file_.path(), path(name), "missing from the checkpoint");
   const auto dims = file_.shape(path(name));
   expect_shape(name, dims.empty() ? 0 : dims[0], int(columns));
-  return file_.read_int64(path(name));
+  return read_checked_integers(file_, path(name), {any_extent, columns}, min, max);
+}
+
+bool CheckpointReader::has_attribute(const std::string& name) const { return file_.has_attribute(group_, name); }
+
+double CheckpointReader::attribute(const std::string& name, ValueRange range) const {
+  return read_checked_double_attribute(file_, group_, name, range);
 }
 
 template <class T>
-std::vector<T> CheckpointReader::rows(const std::string& name, size_t count) const {
-  if constexpr (std::is_same_v<T, int32_t>) {
+std::vector<T> CheckpointReader::rows(const std::string& name, size_t count, ValueRange range) const {
+  if constexpr (std::is_integral_v<T>) {
     expect_shape(name, count, 1);
-    return file_.read_int32(path(name));
-  } else if constexpr (std::is_same_v<T, uint8_t>) {
-    expect_shape(name, count, 1);
-    return file_.read_uint8(path(name));
-  } else if constexpr (std::is_same_v<T, uint32_t>) {
-    expect_shape(name, count, 1);
-    const auto v = file_.read_int64(path(name));
-    return std::vector<uint32_t>(v.begin(), v.end());
+    // The range as integers, clamped to T's: an unsigned field cannot hold a negative value.
+    const double lo = std::max(range.min, double(std::numeric_limits<T>::min()));
+    const double hi = std::min(range.max, double(std::numeric_limits<T>::max()));
+    const auto v = read_checked_integers(file_, path(name), {count}, int64_t(lo),
+                                         hi >= 9.2e18 ? std::numeric_limits<int64_t>::max() : int64_t(hi));
+    return std::vector<T>(v.begin(), v.end());
   } else {
-    expect_shape(name, count, CheckpointCodec<T>::components);
-    return unflatten<T>(finite_values(name, file_.read_doubles(path(name))));
+    constexpr size_t n = size_t(CheckpointCodec<T>::components);
+    expect_shape(name, count, int(n));
+    return unflatten<T>(read_checked_doubles(file_, path(name), n == 1 ? std::vector<size_t>{count}
+                                                                        : std::vector<size_t>{count, n},
+                                             range));
   }
 }
 
 #define LATMPM_CHECKPOINT_ROWS(T)                                                        \
   template void CheckpointWriter::rows<T>(const std::string&, const std::vector<T>&);   \
-  template std::vector<T> CheckpointReader::rows<T>(const std::string&, size_t) const;
+  template std::vector<T> CheckpointReader::rows<T>(const std::string&, size_t, ValueRange) const;
 LATMPM_CHECKPOINT_ROWS(Real)
 LATMPM_CHECKPOINT_ROWS(Vec3)
 LATMPM_CHECKPOINT_ROWS(Mat3)
@@ -167,6 +172,7 @@ LATMPM_CHECKPOINT_ROWS(CpdiParticleDomain)
 LATMPM_CHECKPOINT_ROWS(int32_t)
 LATMPM_CHECKPOINT_ROWS(uint32_t)
 LATMPM_CHECKPOINT_ROWS(uint8_t)
+LATMPM_CHECKPOINT_ROWS(int64_t)
 #undef LATMPM_CHECKPOINT_ROWS
 
 }  // namespace latmpm::mpm

@@ -2,12 +2,17 @@
 // HDF5 file, the group carrying the format version. Every value of a solver state is saved
 // under its own name (no positional scalars), so a reader can say which one is missing or
 // wrong, and a new value is a new name. The reader is the one place where a checkpoint's
-// datasets are checked on their way in (shape now; ranges and finiteness belong here too).
+// datasets are checked on their way in, as they are read (the file is read once): shape
+// against the counts the scene gives, integer type, finiteness of every real and the range
+// the caller states (core/checked_read.hpp). A corrupted but well-formed file is refused with
+// one InputError naming the file and the dataset before the solver state is changed.
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "core/checked_read.hpp"  // ValueRange
 #include "mpm/particles.hpp"  // CpdiParticleDomain
 #include "mpm/real.hpp"
 
@@ -44,7 +49,7 @@ class CheckpointWriter {
   void strings(const std::string& name, const std::vector<std::string>& values);
   void integers(const std::string& name, const std::vector<int64_t>& values, size_t columns);
   // One row per element: Real, Vec3, Mat3 (column-major), SymTensor (Voigt) as doubles;
-  // int32, uint8 as they are; uint32 as int64.
+  // int32, uint8, int64 as they are; uint32 as int64.
   template <class T>
   void rows(const std::string& name, const std::vector<T>& values);
   // The same writer for a sub-group (its datasets under group/sub).
@@ -62,16 +67,28 @@ class CheckpointReader {
   // Throws InputError(file, group, ...) when the group has no format version or another one.
   CheckpointReader(const Hdf5File& file, std::string group);
   bool has(const std::string& name) const;
-  double scalar(const std::string& name) const;
-  int64_t integer(const std::string& name) const;
+  // Every read below throws InputError(file, dataset, ...) when the dataset is missing, has
+  // another shape, is not of an integer type where integers are read, holds a real that is
+  // not finite, or a value outside `range` / [min, max].
+  double scalar(const std::string& name, ValueRange range = {}) const;
+  int64_t integer(const std::string& name, int64_t min = std::numeric_limits<int64_t>::min(),
+                  int64_t max = std::numeric_limits<int64_t>::max()) const;
   std::vector<std::string> strings(const std::string& name) const;
   // A table of `columns` integers per row, any number of rows.
-  std::vector<int64_t> integers(const std::string& name, size_t columns) const;
+  std::vector<int64_t> integers(const std::string& name, size_t columns,
+                                int64_t min = std::numeric_limits<int64_t>::min(),
+                                int64_t max = std::numeric_limits<int64_t>::max()) const;
   // Exactly `count` rows of T (see CheckpointWriter::rows); InputError naming the dataset
   // and the row counts when they differ ("another scene or point set").
   template <class T>
-  std::vector<T> rows(const std::string& name, size_t count) const;
+  std::vector<T> rows(const std::string& name, size_t count, ValueRange range = {}) const;
+  // Scalar attributes of the group.
+  bool has_attribute(const std::string& name) const;
+  double attribute(const std::string& name, ValueRange range = {}) const;
   CheckpointReader sub(const std::string& sub) const;
+  // Another group of the same file, whose format version this reader has checked (e.g. the
+  // run's /output beside /state).
+  CheckpointReader group(const std::string& group) const;
   const std::string& file_path() const;
 
  private:
@@ -79,7 +96,6 @@ class CheckpointReader {
   std::string path(const std::string& name) const { return group_ + "/" + name; }
   // The dataset's dims, checked against count rows of `components` values.
   void expect_shape(const std::string& name, size_t count, int components) const;
-  std::vector<double> finite_values(const std::string& name, std::vector<double> values) const;
   const Hdf5File& file_;
   std::string group_;
 };

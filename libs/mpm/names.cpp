@@ -1,8 +1,9 @@
 // Scene names of the solver's enumerations, both ways: one table per choice, which the scene
-// reader, its error messages and `latmpm-solve --list` all read. A new shape function, scheme,
-// material model, body role or rigid-body shape, motion or coupling is one row here; a new
-// shape function also its default CFL and scheme below.
+// reader, its error messages and `latmpm-solve --list` all read. A new shape function (with
+// its default CFL), scheme, material model, body role or rigid-body shape, motion or
+// coupling is one row here.
 #include <array>
+#include <tuple>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -15,39 +16,42 @@
 namespace latmpm::mpm {
 
 namespace {
-template <class Enum, size_t N>
-std::string name_of(Enum value, const std::array<std::pair<Enum, const char*>, N>& names) {
-  for (const auto& [e, n] : names)
-    if (e == value) return n;
+// A table is an array of rows (enum value, name, ...): std::pair or std::tuple.
+template <class Enum, class Table>
+std::string name_of(Enum value, const Table& names) {
+  for (const auto& row : names)
+    if (std::get<0>(row) == value) return std::get<1>(row);
   return "?";
 }
 
-template <class Enum, size_t N>
-std::vector<std::string> names_in(const std::array<std::pair<Enum, const char*>, N>& names) {
+template <class Table>
+std::vector<std::string> names_in(const Table& names) {
   std::vector<std::string> out;
-  for (const auto& [e, n] : names) out.emplace_back(n);
+  for (const auto& row : names) out.emplace_back(std::get<1>(row));
   return out;
 }
 
-template <class Enum, size_t N>
-Enum parse_name(const std::string& text, const std::array<std::pair<Enum, const char*>, N>& names,
-                const std::string& where, const std::string& field) {
+template <class Table>
+auto parse_name(const std::string& text, const Table& names, const std::string& where, const std::string& field) {
   std::string choices;
-  for (const auto& [e, n] : names) {
-    if (text == n) return e;
-    choices += (choices.empty() ? "" : ", ") + std::string(n);
+  for (const auto& row : names) {
+    if (text == std::get<1>(row)) return std::get<0>(row);
+    choices += (choices.empty() ? "" : ", ") + std::string(std::get<1>(row));
   }
   throw InputError(where, field, "unknown value '" + text + "' (expected one of: " + choices + ")");
 }
 
-constexpr std::array<std::pair<ShapeFunctionKind, const char*>, 7> shape_names{{
-    {ShapeFunctionKind::linear, "linear"},
-    {ShapeFunctionKind::ugimp, "ugimp"},
-    {ShapeFunctionKind::cpgimp, "cpgimp"},
-    {ShapeFunctionKind::bspline2, "bspline2"},
-    {ShapeFunctionKind::bspline3, "bspline3"},
-    {ShapeFunctionKind::ddmp, "ddmp"},
-    {ShapeFunctionKind::cpdi1, "cpdi1"},
+// Name and default CFL number: the largest of 0.3, 0.5, 0.6 ... 1.0 up to which paper A's
+// column (cell 0.4 mm; for uGIMP also the QUICK T2P30 lattice) finished with its load within
+// 1 % of the run at 0.3 (docs/tradeoff.md, "Time step"; pipelines/tradeoff/cfl-matrix.sh).
+constexpr std::array<std::tuple<ShapeFunctionKind, const char*, double>, 7> shape_names{{
+    {ShapeFunctionKind::linear, "linear", 0.3},      // MUSL; at 0.5 the column's load moved 2.9 %, at 0.8 it failed
+    {ShapeFunctionKind::ugimp, "ugimp", 0.5},        // column: 0.6 moved the load 66 %, 0.7 failed; lattice: 0.7 failed
+    {ShapeFunctionKind::cpgimp, "cpgimp", 0.6},      // column: 0.7 failed
+    {ShapeFunctionKind::bspline2, "bspline2", 0.8},  // column: 0.9 failed
+    {ShapeFunctionKind::bspline3, "bspline3", 1.0},  // column: within 0.2 % up to 1.0
+    {ShapeFunctionKind::ddmp, "ddmp", 0.5},          // column: 0.6 moved the load 1.5 %, 0.7 failed
+    {ShapeFunctionKind::cpdi1, "cpdi1", 0.3},        // not measured: the conservative value
 }};
 constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
     {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};
@@ -97,15 +101,8 @@ RigidMotion parse_rigid_motion(const std::string& name) { return parse_name(name
 RigidCoupling parse_rigid_coupling(const std::string& name) { return parse_name(name, rigid_coupling_names_, "", ""); }
 
 double default_cfl(ShapeFunctionKind shape) {
-  switch (shape) {
-    case ShapeFunctionKind::linear: return 0.3;    // MUSL; at 0.5 the column's load moved 2.9 %, at 0.8 it failed
-    case ShapeFunctionKind::ugimp: return 0.5;     // column: 0.6 moved the load 66 %, 0.7 failed; lattice: 0.7 failed
-    case ShapeFunctionKind::cpgimp: return 0.6;    // column: 0.7 failed
-    case ShapeFunctionKind::bspline2: return 0.8;  // column: 0.9 failed
-    case ShapeFunctionKind::bspline3: return 1.0;  // column: within 0.2 % up to 1.0
-    case ShapeFunctionKind::ddmp: return 0.5;      // column: 0.6 moved the load 1.5 %, 0.7 failed
-    case ShapeFunctionKind::cpdi1: return 0.3;     // not measured: the conservative value
-  }
+  for (const auto& [kind, name, cfl] : shape_names)
+    if (kind == shape) return cfl;
   return 0.3;
 }
 

@@ -10,6 +10,17 @@
 
 namespace latmpm::mpm {
 
+// What a checkpoint's values of a field must be, checked as they are read (Simulation::load_state;
+// beyond the shape, and finiteness for reals).
+enum class FieldBound {
+  any,
+  non_negative,        // mass, volume, half size
+  body_index,          // 0 .. bodies − 1
+  particle_id,         // a permutation of 0 .. particles − 1
+  byte,                // 0 .. 255
+  rigid_body_or_none,  // −1 (none) or 0 .. rigid bodies − 1
+};
+
 struct ParticleField {
   const char* name;  // dataset name in a checkpoint's particles group
   // Optional fields are empty unless the run needs them (penalty contact history): resize
@@ -17,6 +28,7 @@ struct ParticleField {
   bool optional = false;
   // Shown in snapshots beside the fixed snapshot quantities (particle_snapshot.hpp).
   bool snapshot = false;
+  FieldBound bound = FieldBound::any;
 };
 
 // Calls visit(field, values, fill) for every per-particle array of ps, in a fixed order;
@@ -25,15 +37,15 @@ template <class PS, class Visit>
 void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"position"}, ps.position, Vec3(Vec3::Zero()));
   visit(ParticleField{"velocity"}, ps.velocity, Vec3(Vec3::Zero()));
-  visit(ParticleField{"mass"}, ps.mass, Real(0));
-  visit(ParticleField{"volume0"}, ps.volume0, Real(0));
+  visit(ParticleField{"mass", false, false, FieldBound::non_negative}, ps.mass, Real(0));
+  visit(ParticleField{"volume0", false, false, FieldBound::non_negative}, ps.volume0, Real(0));
   visit(ParticleField{"deformation"}, ps.deformation, Mat3(Mat3::Identity()));
   visit(ParticleField{"stress"}, ps.stress, SymTensor(SymTensor::Zero()));
-  visit(ParticleField{"half_size0"}, ps.half_size0, Vec3(Vec3::Zero()));
-  visit(ParticleField{"body"}, ps.body, int32_t(0));
-  visit(ParticleField{"id"}, ps.id, uint32_t(0));
-  visit(ParticleField{"flags"}, ps.flags, uint8_t(0));
-  visit(ParticleField{"contact_body", true}, ps.contact_body, int32_t(-1));
+  visit(ParticleField{"half_size0", false, false, FieldBound::non_negative}, ps.half_size0, Vec3(Vec3::Zero()));
+  visit(ParticleField{"body", false, false, FieldBound::body_index}, ps.body, int32_t(0));
+  visit(ParticleField{"id", false, false, FieldBound::particle_id}, ps.id, uint32_t(0));
+  visit(ParticleField{"flags", false, false, FieldBound::byte}, ps.flags, uint8_t(0));
+  visit(ParticleField{"contact_body", true, false, FieldBound::rigid_body_or_none}, ps.contact_body, int32_t(-1));
   visit(ParticleField{"contact_anchor", true}, ps.contact_anchor, Vec3(Vec3::Zero()));
   visit(ParticleField{"cpdi_domain", true}, ps.cpdi_domain, CpdiParticleDomain(CpdiParticleDomain::Zero()));
   for (auto& column : ps.history)

@@ -1,6 +1,7 @@
 // Dispatch over the closed set of shape functions: one switch per stage, outside the
 // particle loops, which are compiled once per shape. Adding a shape function: a header
-// like shape_bspline.hpp with a policy struct, an enum value, and one case here.
+// like shape_bspline.hpp with a policy struct, an enum value, one case here and its row (name,
+// default CFL) in names.cpp (docs/architecture.md, "A shape function").
 #pragma once
 #include <utility>
 

@@ -4,6 +4,9 @@
 // order the uninterrupted one would: results agree bit for bit (the thread count does not
 // matter, step_stages.hpp). Every particle field comes from the registry
 // (particle_fields.hpp).
+#include <limits>
+#include <type_traits>
+
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "mpm/checkpoint_io.hpp"
@@ -14,28 +17,31 @@
 namespace latmpm::mpm {
 
 namespace {
-// The step's diagnostics and the carried solver scalars, by name (both directions).
+constexpr ValueRange non_negative{0, std::numeric_limits<double>::max()};
+
+// The step's diagnostics and the carried solver scalars, by name (both directions), with the
+// range a checkpoint's value must lie in (finite for all).
 template <class D, class C, class Visit>
 void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
-  visit("time", d.time);
-  visit("dt", d.dt);
-  visit("stable_dt", d.stable_dt);
-  visit("kinetic_energy", d.kinetic_energy);
-  visit("strain_energy", d.strain_energy);
-  visit("plastic_dissipation", d.plastic_dissipation);
-  visit("external_work", d.external_work);
-  visit("max_speed", d.max_speed);
-  visit("constraint_work", d.constraint_work);
-  visit("gravity_work", d.gravity_work);
-  visit("rigid_energy", d.rigid_energy);
-  visit("contact_energy", d.contact_energy);
-  visit("friction_dissipation", d.friction_dissipation);
-  visit("energy_error", d.energy_error);
-  visit("carried_max_speed", carried.max_speed);
-  visit("carried_max_wave_speed", carried.max_wave_speed);
-  visit("initial_energy", carried.initial_energy);
-  visit("initial_rigid_energy", carried.initial_rigid_energy);
-  visit("driven_rigid_work", carried.driven_rigid_work);
+  visit("time", d.time, non_negative);
+  visit("dt", d.dt, non_negative);
+  visit("stable_dt", d.stable_dt, non_negative);
+  visit("kinetic_energy", d.kinetic_energy, ValueRange{});
+  visit("strain_energy", d.strain_energy, ValueRange{});
+  visit("plastic_dissipation", d.plastic_dissipation, ValueRange{});
+  visit("external_work", d.external_work, ValueRange{});
+  visit("max_speed", d.max_speed, ValueRange{});
+  visit("constraint_work", d.constraint_work, ValueRange{});
+  visit("gravity_work", d.gravity_work, ValueRange{});
+  visit("rigid_energy", d.rigid_energy, ValueRange{});
+  visit("contact_energy", d.contact_energy, ValueRange{});
+  visit("friction_dissipation", d.friction_dissipation, ValueRange{});
+  visit("energy_error", d.energy_error, ValueRange{});
+  visit("carried_max_speed", carried.max_speed, ValueRange{});
+  visit("carried_max_wave_speed", carried.max_wave_speed, ValueRange{});
+  visit("initial_energy", carried.initial_energy, ValueRange{});
+  visit("initial_rigid_energy", carried.initial_rigid_energy, ValueRange{});
+  visit("driven_rigid_work", carried.driven_rigid_work, ValueRange{});
 }
 
 std::vector<std::string> names_of(const std::vector<BodySettings>& bodies) {
@@ -47,6 +53,47 @@ std::vector<std::string> names_of(const std::vector<RigidBodySettings>& bodies) 
   std::vector<std::string> names;
   for (const auto& b : bodies) names.push_back(b.name);
   return names;
+}
+
+// The values a field's bound allows, for n particles, nb bodies and nr rigid bodies.
+ValueRange allowed(FieldBound bound, size_t n, size_t nb, size_t nr) {
+  switch (bound) {
+    case FieldBound::any: return {};
+    case FieldBound::non_negative: return non_negative;
+    case FieldBound::body_index: return {0, double(nb) - 1};
+    case FieldBound::particle_id: return {0, double(n) - 1};
+    case FieldBound::byte: return {0, 255};
+    case FieldBound::rigid_body_or_none: return {-1, double(nr) - 1};
+  }
+  return {};
+}
+
+// Ids are a permutation of 0..n-1 (each within range already): the solver orders particles by them.
+void check_permutation(const std::string& file, const std::string& dataset, const std::vector<uint32_t>& ids) {
+  std::vector<char> seen(ids.size(), 0);
+  for (uint32_t id : ids) {
+    if (seen[id]) throw InputError(file, dataset, "id " + std::to_string(id) + " appears twice");
+    seen[id] = 1;
+  }
+}
+
+// [begin, end) ranges in column `begin_column` of a table: begin <= end, each continuing the
+// previous one, from 0 to `limit`. An empty table passes: a run stopped before its first step
+// has not sorted its particles into buckets yet.
+void check_ranges(const std::string& file, const std::string& dataset, const std::vector<int64_t>& table,
+                  size_t columns, size_t begin_column, int64_t limit, const std::string& what) {
+  int64_t expected = 0;
+  for (size_t row = 0; row < table.size() / columns; ++row) {
+    const int64_t begin = table[row * columns + begin_column], end = table[row * columns + begin_column + 1];
+    if (begin != expected || end < begin || end > limit)
+      throw InputError(file, dataset, "row " + std::to_string(row) + ": " + what + " range [" + std::to_string(begin) +
+                                          ", " + std::to_string(end) + ") does not continue the previous one within [0, " +
+                                          std::to_string(limit) + ")");
+    expected = end;
+  }
+  if (!table.empty() && expected != limit)
+    throw InputError(file, dataset, "the " + what + " ranges end at " + std::to_string(expected) + ", not at " +
+                                        std::to_string(limit));
 }
 }  // namespace
 
@@ -72,7 +119,7 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
   CheckpointWriter solver = out.sub("solver");
   const StepDiagnostics& d = state_.diagnostics;
   solver.integer("step", d.step);
-  for_each_solver_scalar(d, state_.carried, [&](const char* name, Real value) { solver.scalar(name, value); });
+  for_each_solver_scalar(d, state_.carried, [&](const char* name, Real value, ValueRange) { solver.scalar(name, value); });
   solver.rows("body_displacement", d.body_displacement);
   solver.rows("reaction", d.reaction);
   solver.rows("initial_centre", state_.carried.initial_centre);
@@ -93,21 +140,35 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   if (!rigid_names.empty() && (!in.has("rigid_bodies") || in.strings("rigid_bodies") != rigid_names))
     throw InputError(f.path(), g + "/rigid_bodies", "the checkpoint's rigid bodies differ from the scene's");
 
-  // Everything is read and checked before anything is changed: a refused checkpoint leaves
-  // the simulation as it was.
+  // Everything is read and checked as it is read, before anything is changed: a refused
+  // checkpoint leaves the simulation as it was. Indices stay within the tables they point
+  // into (bodies, particles, buckets, runs), so a corrupted file cannot crash the run.
   const CheckpointReader particles_in = in.sub("particles");
+  const size_t nb = bodies_.size(), nr = rigid_bodies_.size();
   Particles p = state_.particles;
   for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
     if (field.optional && values.empty()) return;  // the scene's run does not use it
     if (field.optional && !particles_in.has(field.name))
       throw InputError(f.path(), g + "/particles/" + field.name,
                        "missing: the scene's run uses it (penalty contact), the checkpoint's run did not");
-    values = particles_in.rows<typename std::decay_t<decltype(values)>::value_type>(field.name, n);
+    values = particles_in.rows<typename std::decay_t<decltype(values)>::value_type>(field.name, n,
+                                                                                   allowed(field.bound, n, nb, nr));
+    if constexpr (std::is_same_v<std::decay_t<decltype(values)>, std::vector<uint32_t>>)
+      if (field.bound == FieldBound::particle_id) check_permutation(f.path(), g + "/particles/" + field.name, values);
   });
 
+  // Buckets and runs: contiguous particle ranges; each bucket's runs a contiguous range of runs.
   const CheckpointReader sorting = in.sub("buckets");
-  const auto b = sorting.integers("buckets", 7);
-  const auto r = sorting.integers("runs", 3);
+  const auto r = sorting.integers("runs", 3, 0, int64_t(n));
+  for (size_t i = 0; i < r.size() / 3; ++i)
+    if (r[3 * i] >= int64_t(nb))
+      throw InputError(f.path(), g + "/buckets/runs",
+                       "row " + std::to_string(i) + ": body " + std::to_string(r[3 * i]) + " of " + std::to_string(nb));
+  check_ranges(f.path(), g + "/buckets/runs", r, 3, 1, int64_t(n), "particle");
+  const auto b = sorting.integers("buckets", 7, std::numeric_limits<int32_t>::min() / 8,
+                                  std::numeric_limits<int32_t>::max() / 8);
+  check_ranges(f.path(), g + "/buckets/buckets", b, 7, 3, int64_t(n), "particle");
+  check_ranges(f.path(), g + "/buckets/buckets", b, 7, 5, int64_t(r.size() / 3), "run");
   std::vector<Bucket> buckets(b.size() / 7);
   for (size_t i = 0; i < buckets.size(); ++i) {
     const int64_t* x = &b[7 * i];
@@ -117,14 +178,15 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   }
   std::vector<BodyRun> runs(r.size() / 3);
   for (size_t i = 0; i < runs.size(); ++i) runs[i] = {int32_t(r[3 * i]), uint32_t(r[3 * i + 1]), uint32_t(r[3 * i + 2])};
-  const bool needs_sort = sorting.integer("needs_sort") != 0;
+  const bool needs_sort = sorting.integer("needs_sort", 0, 1) != 0;
 
   const CheckpointReader solver = in.sub("solver");
-  const size_t nb = bodies_.size();
   StepDiagnostics d = state_.diagnostics;
-  d.step = solver.integer("step");
+  d.step = solver.integer("step", 0);
   CarriedState carried;
-  for_each_solver_scalar(d, carried, [&](const char* name, Real& value) { value = solver.scalar(name); });
+  for_each_solver_scalar(d, carried, [&](const char* name, Real& value, ValueRange range) {
+    value = solver.scalar(name, range);
+  });
   d.body_displacement = solver.rows<Vec3>("body_displacement", nb);
   d.reaction = solver.rows<Vec3>("reaction", nb);
   carried.initial_centre = solver.rows<Vec3>("initial_centre", nb);

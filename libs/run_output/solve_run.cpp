@@ -5,16 +5,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
 #include "core/hdf5_file.hpp"
 #include "core/interruption.hpp"
-#include "run_output/checkpoint_checks.hpp"
 #include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "core/number_text.hpp"
+#include "mpm/checkpoint_io.hpp"
 #include "mpm/simulation.hpp"
 #include "points/point_set.hpp"
 #include "run_output/run_log.hpp"
@@ -89,22 +90,24 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     if (!fs::is_regular_file(checkpoint_path))
       throw InputError(checkpoint_path, "", "no checkpoint to resume from (the run wrote none)");
     Hdf5File file(checkpoint_path, Hdf5File::Mode::read);
-    check_checkpoint(file, sim);
-    sim.load_state(file, "/state");
-    const auto names = file.read_strings("/output/frame_files");
-    const auto times = file.read_doubles("/output/frame_times");
-    const auto steps = file.read_int64("/output/frame_steps");
-    const auto points = file.read_int64("/output/frame_points");
+    sim.load_state(file, "/state");  // checks the state as it reads it
+    // The outputs: the snapshots written so far, checked as they are read.
+    const mpm::CheckpointReader output = mpm::CheckpointReader(file, "/state").group("/output");
+    const ValueRange non_negative{0, std::numeric_limits<double>::max()};
+    const auto names = output.strings("frame_files");
+    const auto times = output.rows<double>("frame_times", names.size(), non_negative);
+    const auto steps = output.rows<int64_t>("frame_steps", names.size(), {0, double(sim.step_count())});
+    const auto points = output.rows<int64_t>("frame_points", names.size(), {0, double(sim.particles().size())});
     // The frames' extra scalars are the run's material history columns, the same in every frame.
     std::vector<std::string> history;
     for (const auto& column : sim.particles().history) history.push_back(column.name);
     for (size_t i = 0; i < names.size(); ++i)
       kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i]), history});
-    wall_before = file.double_attribute("/output", "wall_seconds");
+    wall_before = output.attribute("wall_seconds", non_negative);
     before.stepping_wall_seconds = wall_before;
-    if (file.has_attribute("/output", "cpu_seconds")) {  // checkpoints written since status.toml
-      before.cpu_seconds = file.double_attribute("/output", "cpu_seconds");
-      before.wall_seconds = file.double_attribute("/output", "process_wall_seconds");
+    if (output.has_attribute("cpu_seconds")) {  // checkpoints written since status.toml
+      before.cpu_seconds = output.attribute("cpu_seconds", non_negative);
+      before.wall_seconds = output.attribute("process_wall_seconds", non_negative);
     }
   } else {
     // A checkpoint left by an earlier run in this directory is not this run's state: resuming

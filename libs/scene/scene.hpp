@@ -2,8 +2,8 @@
 // key reference); every dimensional value carries its unit in the file and is SI here.
 // Reading is separate from building the simulation (pbrt's Create(params) then construct).
 // The scene holds the solver's own parameter structs whole (mpm::Settings,
-// mpm::MaterialParameters in mpm::BodySettings, mpm::RigidBodySettings),
-// each read by one read() in scene/solver_readers.cpp; the choices
+// mpm::MaterialParameters in mpm::BodySettings, mpm::RigidBodySettings,
+// statics::StaticSettings), each read by one read() in scene/solver_readers.cpp; the choices
 // are named by the solver's one table per choice (mpm/names.cpp), and the defaults are the
 // structs' own. What is here besides is the scene's: where each value came from (for
 // messages), the run's end, outputs, checkpoints and the point files.
@@ -17,6 +17,7 @@
 #include "mpm/body.hpp"
 #include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
+#include "statics/static_settings.hpp"
 
 namespace latmpm {
 
@@ -70,11 +71,7 @@ struct EndCondition {
 // to run.end.plate_displacement in `increments` equilibrium steps.
 struct SolverSpec {
   enum Kind { explicit_dynamics, static_equilibrium } kind = explicit_dynamics;
-  int increments = 20;                  // static: equilibrium steps to the end travel
-  std::string linear_solver = "cholmod";  // static: "cholmod", "ldlt" or "cg"
-  double tolerance = 1e-8;              // static: relative residual force of each increment
-  bool check_stability = true;          // static: end the path at the first unstable equilibrium
-  double stabilisation = 0.1;           // static: β of the affine stabilisation (× shear modulus)
+  statics::StaticSettings statics;  // static: the static solver's own settings
   std::string where;
 };
 

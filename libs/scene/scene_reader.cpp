@@ -163,14 +163,7 @@ void read_solver(TableReader solver, Scene& s) {
   spec.kind = solver.choice("kind", {"explicit", "static"}, "explicit") == "static" ? SolverSpec::static_equilibrium
                                                                                    : SolverSpec::explicit_dynamics;
   if (spec.kind == SolverSpec::static_equilibrium) {
-    spec.increments = int(solver.integer("increments", 20));
-    if (spec.increments < 1) solver.fail("increments", "must be at least 1");
-    spec.linear_solver = solver.choice("linear_solver", {"cholmod", "ldlt", "cg"}, "cholmod");
-    spec.tolerance = solver.number("tolerance", 1e-8);
-    if (!(spec.tolerance > 0 && spec.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
-    spec.check_stability = solver.boolean("check_stability", true);
-    spec.stabilisation = solver.number("stabilisation", 0.1);
-    if (!(spec.stabilisation >= 0 && spec.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
+    read(solver, spec.statics);
     if (s.end.kind != EndCondition::plate_displacement)
       solver.fail("kind", "a static solve needs run.end = { plate_displacement = \"...\" }");
   }

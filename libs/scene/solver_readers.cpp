@@ -121,4 +121,16 @@ void read(TableReader& b, mpm::RigidBodySettings& body) {
   read_contact(b, body);
 }
 
+void read(TableReader& solver, statics::StaticSettings& s) {
+  s.increments = int(solver.integer("increments", s.increments));
+  if (s.increments < 1) solver.fail("increments", "must be at least 1");
+  s.linear_solver = statics::parse_linear_solver(
+      solver.choice("linear_solver", statics::linear_solver_names(), statics::to_string(s.linear_solver)));
+  s.tolerance = solver.number("tolerance", s.tolerance);
+  if (!(s.tolerance > 0 && s.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
+  s.check_stability = solver.boolean("check_stability", s.check_stability);
+  s.stabilisation = solver.number("stabilisation", s.stabilisation);
+  if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
+}
+
 }  // namespace latmpm::scene_toml

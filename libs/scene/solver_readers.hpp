@@ -10,6 +10,7 @@
 #include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
 #include "scene/toml_table_reader.hpp"
+#include "statics/static_settings.hpp"
 
 namespace latmpm::scene_toml {
 
@@ -25,5 +26,9 @@ void read(TableReader& material, mpm::MaterialParameters& parameters);
 // [rigid_bodies.<name>]: motion, shape and its geometry, velocity, mass, gravity, contact.
 // The name is the caller's; plane_normal is made a unit vector.
 void read(TableReader& body, mpm::RigidBodySettings& settings);
+
+// [solver] of a static run: increments, linear_solver, tolerance, check_stability,
+// stabilisation.
+void read(TableReader& solver, statics::StaticSettings& settings);
 
 }  // namespace latmpm::scene_toml

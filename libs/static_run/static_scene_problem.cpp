@@ -113,9 +113,9 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
     throw InputError(scene.solver.where, "solver.kind", "a static solve needs a support: a fixed body or held points");
   out.loading.direction = (driven ? driven->velocity : driven_rigid->velocity).normalized();
   out.loading.travel = scene.end.value;
-  out.loading.increments = scene.solver.increments;
-  out.loading.check_stability = scene.solver.check_stability;
-  out.problem->set_stabilisation(scene.solver.stabilisation);
+  out.loading.increments = scene.solver.statics.increments;
+  out.loading.check_stability = scene.solver.statics.check_stability;
+  out.problem->set_stabilisation(scene.solver.statics.stabilisation);
   return out;
 }
 

@@ -77,9 +77,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   PointSet points = load_scene_points(scene, &provenance);
   StaticSceneProblem sp = make_static_problem(scene, points);
   statics::StaticProblem& problem = *sp.problem;
-  const statics::LinearSolverKind solver_kind = statics::parse_linear_solver(scene.solver.linear_solver);
+  const statics::LinearSolverKind solver_kind = scene.solver.statics.linear_solver;
   statics::NewtonOptions newton;
-  newton.tolerance = scene.solver.tolerance;
+  newton.tolerance = scene.solver.statics.tolerance;
 
   std::filesystem::create_directories(run_dir);
   {
@@ -96,8 +96,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   log.line("command: " + provenance.command_line);
   log.line("scene: " + scene.source + " (resolved copy: scene.toml)");
   log.line("static solve (paper C Sec. 3.3): projected Newton on the narrow band, linear solver " +
-           scene.solver.linear_solver + ", tolerance " + format_number("%g", scene.solver.tolerance) +
-           ", affine stabilisation β " + format_number("%g", scene.solver.stabilisation));
+           statics::to_string(scene.solver.statics.linear_solver) + ", tolerance " +
+           format_number("%g", scene.solver.statics.tolerance) + ", affine stabilisation β " +
+           format_number("%g", scene.solver.statics.stabilisation));
   log.line("points: " + std::to_string(problem.point_count()) + " material, band nodes " +
            std::to_string(problem.band().node_count()) + " (" + std::to_string(problem.dof_count()) +
            " unknowns), support nodes " + std::to_string(sp.loading.support_nodes.size()) + ", platen nodes " +
@@ -130,12 +131,18 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
                              " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
                              std::to_string(pt.newton_iterations) + ", linear " +
-                             std::to_string(pt.linear_iterations) + ", residual " + format_number("%.2e", pt.residual) +
+                             std::to_string(pt.linear_iterations) + " (last residual " +
+                             format_number("%.1e", pt.linear_residual) + "), residual " + format_number("%.2e", pt.residual) +
                              ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
     log.line(line);
     if (progress) std::cerr << "latmpm-solve: " << line << "\n";
   };
-  statics::SparseSolver solver(solver_kind);
+  // Iterative solves (CG, AMG) to 1e-4 of the Newton tolerance: at 1e-2 of it a linear
+  // problem took two Newton steps instead of one (QUICK T2P30, docs/statics.md).
+  statics::SparseSolver solver(solver_kind, 1e-4 * scene.solver.statics.tolerance);
+  std::vector<statics::Vec3> node_positions(problem.band().node_count());  // the AMG's rigid-body modes
+  for (size_t n = 0; n < node_positions.size(); ++n) node_positions[n] = problem.band().node_position(n);
+  solver.set_node_positions(std::move(node_positions));
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
   log.line("linear solver: " + solver.describe());
   series.save();
@@ -157,7 +164,11 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
   outcome.status = s.status == "not converged" ? "failed" : "finished";
   outcome.exit_status = 0;
-  outcome.reason = path.ended ? "the static path ends (" + path.end_reason + ")" : "";
+  // Where the path ends, for pipelines reading status.toml (pipelines/lattice-stiffness/table.sh).
+  outcome.reason = path.ended ? "the static path ends (" + path.end_reason + ") at travel " +
+                                    format_number("%.6g", path.end_travel) + " m, load " +
+                                    format_number("%.6g", path.end_load) + " N"
+                              : "";
   outcome.steps = s.increments;
   outcome.simulated_time = s.travel / speed;
   outcome.points = points.size();

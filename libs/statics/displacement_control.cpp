@@ -19,9 +19,9 @@ Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const V
   return load;
 }
 
-// A direct solver for the stability check: CG cannot tell an indefinite matrix.
+// A direct solver for the stability check: CG and AMG cannot tell an indefinite matrix.
 LinearSolverKind direct_kind(LinearSolverKind kind) {
-  return kind == LinearSolverKind::cg ? LinearSolverKind::cholmod : kind;
+  return kind == LinearSolverKind::ldlt ? kind : LinearSolverKind::cholmod;
 }
 }  // namespace
 
@@ -49,6 +49,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.energy = r.energy.back() + problem.external_force().dot(state);
     point.newton_iterations = r.iterations;
     point.linear_iterations = r.linear_iterations;
+    point.linear_residual = r.linear_residual;
     point.residual = r.residual.back();
     point.min_jacobian = r.min_jacobian;
     point.stable = true;

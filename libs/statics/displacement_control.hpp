@@ -34,6 +34,7 @@ struct PathPoint {
   Real energy = 0;          // J: stored elastic energy
   int newton_iterations = 0;
   int linear_iterations = 0;
+  Real linear_residual = 0;  // ‖K d − r‖ / ‖r‖ of the last linear solve
   Real residual = 0;        // final relative residual
   Real min_jacobian = 1;
   bool stable = true;       // true tangent positive definite (or not checked)

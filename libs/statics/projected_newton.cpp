@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "statics/inversion_free_step.hpp"
 
 namespace latmpm::statics {
@@ -61,16 +62,22 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     // Newton direction (step 2–3): near the solution the true Hessian where it is
     // positive definite (quadratic convergence), otherwise the projected one.
     const bool try_true = !boundary_moves && !true_tangent_indefinite && residual <= options.true_tangent_below;
+    // An iterative solver builds its preconditioner for an indefinite true tangent too: its
+    // direction is then taken only when it solved and descends, else the projected one.
     bool factorized = false;
-    Vector rhs;
+    Vector rhs, d;
+    LinearSolveStats stats;
     for (const bool projected : {false, true}) {
       if (!projected && !try_true) continue;
       problem.assemble_hessian(u, projected);
       SparseMatrix& H = problem.hessian();
+      // Free rows: −g − H_fc·gap. Prescribed rows decouple once constrained (scaled
+      // identity, columns zeroed) and take their gap after the solve, so their right-hand
+      // side is 0: an iterative solver's relative tolerance then measures the free rows only.
       rhs = -g - H * constraint_gap;
       const Real diagonal = mean_diagonal(H);
       for (size_t i = 0; i < fixed.size(); ++i)
-        if (fixed[i]) rhs[Eigen::Index(i)] = diagonal * constraint_gap[Eigen::Index(i)];
+        if (fixed[i]) rhs[Eigen::Index(i)] = 0;
       constrain_rows_and_columns(H, fixed, diagonal);
       // The shift fixes the zero-energy modes of the point quadrature (docs/statics.md):
       // negligible, and raised only while a projected factorisation fails.
@@ -78,6 +85,16 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
         for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
         factorized = solver.factorize(H);
         if (!projected) break;
+      }
+      if (factorized && !projected) {
+        try {
+          d = solver.solve(rhs, stats);
+          factorized = g.dot(free_part(d, fixed)) < 0;
+        } catch (const NumericalError&) {
+          factorized = false;
+        }
+      } else if (factorized) {
+        d = solver.solve(rhs, stats);
       }
       if (factorized) {
         if (!projected) ++report.true_tangent_steps;
@@ -89,8 +106,6 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       report.failure = "the projected Hessian is singular (a part of the body is not held)";
       break;
     }
-    LinearSolveStats stats;
-    Vector d = solver.solve(rhs, stats);
     for (size_t i = 0; i < fixed.size(); ++i)  // exactly, whatever the solver's tolerance
       if (fixed[i]) d[Eigen::Index(i)] = constraint_gap[Eigen::Index(i)];
     report.linear_iterations += stats.iterations;

@@ -2,18 +2,25 @@
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
+#include <unistd.h>
+
 #include <array>
+#include <stdexcept>
 #include <utility>
 
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "statics/cholmod_direct.hpp"
+#include "statics/hypre_amg.hpp"
 
 namespace latmpm::statics {
 
 namespace {
-const std::array<std::pair<LinearSolverKind, const char*>, 3> solver_names{{
-    {LinearSolverKind::ldlt, "ldlt"}, {LinearSolverKind::cg, "cg"}, {LinearSolverKind::cholmod, "cholmod"}}};
+const std::array<std::pair<LinearSolverKind, const char*>, 5> solver_names{{{LinearSolverKind::ldlt, "ldlt"},
+                                                                          {LinearSolverKind::cg, "cg"},
+                                                                          {LinearSolverKind::cholmod, "cholmod"},
+                                                                          {LinearSolverKind::amg, "amg"},
+                                                                          {LinearSolverKind::automatic, "auto"}}};
 }
 
 std::string to_string(LinearSolverKind kind) {
@@ -22,32 +29,49 @@ std::string to_string(LinearSolverKind kind) {
   return "?";
 }
 
+std::vector<std::string> linear_solver_names() {
+  std::vector<std::string> names;
+  for (const auto& [k, n] : solver_names) names.emplace_back(n);
+  return names;
+}
+
 LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where, const std::string& field) {
   for (const auto& [k, n] : solver_names)
     if (name == n) return k;
-  throw InputError(where, field, "unknown value '" + name + "' (expected one of: ldlt, cg, cholmod)");
+  throw InputError(where, field, "unknown value '" + name + "' (expected one of: ldlt, cg, cholmod, amg, auto)");
 }
 
 struct SparseSolver::Impl {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<Real>> cg;
   CholmodDirect cholmod;
+  std::unique_ptr<HypreAmg> amg;  // made on first use: it initialises MPI
+  std::vector<Vec3> node_positions;
   bool analysed = false;
   const SparseMatrix* matrix = nullptr;
 };
 
-SparseSolver::SparseSolver(LinearSolverKind kind, Real cg_tolerance, int cg_max_iterations)
-    : kind_(kind), impl_(std::make_unique<Impl>()) {
-  impl_->cg.setTolerance(cg_tolerance);
-  impl_->cg.setMaxIterations(cg_max_iterations);
+SparseSolver::SparseSolver(LinearSolverKind kind, Real tolerance, int max_iterations)
+    : kind_(kind), used_(kind), iterative_tolerance_(tolerance), iterative_max_iterations_(max_iterations),
+      factor_memory_budget_(0.5 * double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE))),
+      impl_(std::make_unique<Impl>()) {
+  impl_->cg.setTolerance(tolerance);
+  impl_->cg.setMaxIterations(max_iterations);
 }
+
+void SparseSolver::set_node_positions(std::vector<Vec3> positions) { impl_->node_positions = std::move(positions); }
 
 SparseSolver::~SparseSolver() = default;
 
 bool SparseSolver::factorize(const SparseMatrix& K) {
   Impl& s = *impl_;
   s.matrix = &K;
-  switch (kind_) {
+  if (used_ == LinearSolverKind::automatic) {  // CHOLMOD's symbolic analysis says how big L gets
+    s.cholmod.analyse(K);
+    const double factor_bytes = s.cholmod.figures().factor_nonzeros * sizeof(Real);
+    used_ = factor_bytes > factor_memory_budget_ ? LinearSolverKind::amg : LinearSolverKind::cholmod;
+  }
+  switch (used_) {
     case LinearSolverKind::ldlt:
       if (!s.analysed) s.ldlt.analyzePattern(K);
       s.analysed = true;
@@ -59,14 +83,30 @@ bool SparseSolver::factorize(const SparseMatrix& K) {
     case LinearSolverKind::cholmod:
       if (!s.cholmod.analysed()) s.cholmod.analyse(K);
       return s.cholmod.factorize(K);
+    case LinearSolverKind::amg:
+      if (!s.amg) {
+        s.amg = std::make_unique<HypreAmg>(iterative_tolerance_, iterative_max_iterations_);
+        s.amg->set_node_positions(s.node_positions);
+      }
+      s.amg->setup(K);
+      s.analysed = true;
+      return true;
+    case LinearSolverKind::automatic: break;
   }
   return false;
 }
 
 std::string SparseSolver::describe() const {
-  if (kind_ != LinearSolverKind::cholmod || !impl_->cholmod.analysed()) return to_string(kind_);
+  const std::string chosen = kind_ == LinearSolverKind::automatic && used_ != kind_ ? "auto: " : "";
+  if (used_ == LinearSolverKind::amg && impl_->amg) {
+    const AmgFigures& f = impl_->amg->figures();
+    return chosen + "amg (hypre BoomerAMG-preconditioned CG, nodal coarsening, " +
+           (impl_->node_positions.empty() ? "no" : "3") + " rigid-body rotations, " + std::to_string(f.levels) +
+           " levels, operator complexity " + format_number("%.2f", f.operator_complexity) + ")";
+  }
+  if (used_ != LinearSolverKind::cholmod || !impl_->cholmod.analysed()) return chosen + to_string(used_);
   const CholmodFigures& f = impl_->cholmod.figures();
-  return "cholmod (supernodal, " + f.ordering + " ordering of the " + (f.node_ordering ? "node" : "unknown") +
+  return chosen + "cholmod (supernodal, " + f.ordering + " ordering of the " + (f.node_ordering ? "node" : "unknown") +
          " graph, nnz(L) " + format_number("%.3g", f.factor_nonzeros) + ", " + format_number("%.3g", f.flops) +
          " flops per factorisation)";
 }
@@ -75,8 +115,14 @@ Vector SparseSolver::solve(const Vector& b, LinearSolveStats& stats) {
   Impl& s = *impl_;
   Vector x;
   stats.iterations = 1;
-  switch (kind_) {
+  switch (used_) {
     case LinearSolverKind::ldlt: x = s.ldlt.solve(b); break;
+    case LinearSolverKind::amg: {
+      Real hypre_residual = 0;
+      x = s.amg->solve(b, stats.iterations, hypre_residual);
+      break;
+    }
+    case LinearSolverKind::automatic: throw std::logic_error("SparseSolver::solve before factorize");
     case LinearSolverKind::cholmod: x = s.cholmod.solve(b); break;
     case LinearSolverKind::cg:
       x = s.cg.solve(b);

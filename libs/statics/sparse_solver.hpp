@@ -1,42 +1,48 @@
 // One small interface over the sparse symmetric solvers of the static solve: Eigen's
 // SimplicialLDLT (direct, in-tree), Eigen's ConjugateGradient with an incomplete Cholesky
 // preconditioner (iterative, low memory) and SuiteSparse CHOLMOD's supernodal Cholesky
-// (direct, for large problems; cholmod_direct.hpp). The pattern is analysed once
-// and each Newton step only refactorises.
+// (direct; cholmod_direct.hpp) and CG preconditioned by hypre's BoomerAMG (iterative;
+// hypre_amg.hpp). "auto" takes CHOLMOD unless its analysed factor would fill more than
+// half of the machine's memory, then the AMG: on the lattices CHOLMOD is the faster of the
+// two up to the paper size (docs/statics.md), the AMG's merit is a memory that grows only
+// linearly. The pattern is analysed once and each Newton step only refactorises (or
+// rebuilds the AMG hierarchy).
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "statics/band_matrix.hpp"
 #include "statics/static_problem.hpp"
+#include "statics/static_settings.hpp"  // LinearSolverKind
 
 namespace latmpm::statics {
 
-enum class LinearSolverKind { ldlt, cg, cholmod };
-
-// "ldlt", "cg", "cholmod".
-std::string to_string(LinearSolverKind kind);
-// Throws InputError(where, field, ...) for an unknown name.
-LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where = "",
-                                     const std::string& field = "");
 
 struct LinearSolveStats {
-  int iterations = 0;             // CG iterations (1 for a direct solve)
+  int iterations = 0;             // CG / PCG iterations (1 for a direct solve)
   Real relative_residual = 0;     // ‖K x − b‖ / ‖b‖ of the last solve
 };
 
 class SparseSolver {
  public:
-  explicit SparseSolver(LinearSolverKind kind, Real cg_tolerance = 1e-10, int cg_max_iterations = 20000);
+  // tolerance and max_iterations: of CG and of the AMG's PCG (‖K x − b‖ ≤ tolerance ‖b‖).
+  explicit SparseSolver(LinearSolverKind kind, Real tolerance = 1e-10, int max_iterations = 20000);
+  // "auto"'s budget for CHOLMOD's factor, bytes (default: half the physical memory).
+  void set_factor_memory_budget(double bytes) { factor_memory_budget_ = bytes; }
   ~SparseSolver();
   SparseSolver(const SparseSolver&) = delete;
   SparseSolver& operator=(const SparseSolver&) = delete;
 
   LinearSolverKind kind() const { return kind_; }
-  // The solver's name and, for CHOLMOD once analysed, its ordering, nnz(L) and flop count.
+  // Node positions (m) for the AMG's rigid-body modes (node n: unknowns 3n..3n+2).
+  void set_node_positions(std::vector<Vec3> positions);
+  // The solver's name and, once used, CHOLMOD's ordering, nnz(L) and flop count or the
+  // AMG's levels and operator complexity.
   std::string describe() const;
-  // Factorises K (the pattern is analysed on the first call). Returns false when the direct
-  // solvers find K not positive definite; CG only checks that its preconditioner exists.
+  // Factorises K (the pattern is analysed on the first call; "auto" picks its solver
+  // then, from CHOLMOD's analysis and the memory budget). Returns false when the direct solvers find K not positive definite; CG and AMG
+  // only build their preconditioner.
   bool factorize(const SparseMatrix& K);
   // Solves K x = b with the last factorisation; throws NumericalError when CG does not
   // reach its tolerance.
@@ -45,6 +51,10 @@ class SparseSolver {
  private:
   struct Impl;
   LinearSolverKind kind_;
+  LinearSolverKind used_;  // kind_, or what "auto" chose
+  Real iterative_tolerance_;
+  int iterative_max_iterations_;
+  double factor_memory_budget_;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -18,7 +18,8 @@ for l in "$@"; do
   fp=$(sed -n 's/.*\/ \([0-9.]*\) mm^3 footprint.*/\1/p' "$geo")
   e=$(awk -v k="$k" -v z0="$zmin" -v z1="$zmax" -v t="$plate" -v v="$fp" \
       'BEGIN { h = z1 - z0 - 2 * t; printf "%.4g", k * h * h / v }')  # N/mm · mm / mm² = MPa
-  end=$(sed -n 's/^\[[^]]*\] the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N.*/\1;\2;\3/p' "$path/log.txt" 2>/dev/null | tail -1 || true)
+  # status.toml's reason, as the static run writes it (libs/static_run/static_solve_run.cpp).
+  end=$(sed -n 's/^reason = "the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N"$/\1;\2;\3/p' "$path/status.toml" 2>/dev/null || true)
   if [ ! -f "$path/done" ]; then
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then

@@ -29,12 +29,12 @@ TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static 
   const Scene s = parse(scene_with("kind = \"static\"\nincrements = 8\nlinear_solver = \"ldlt\"\n"
                                    "tolerance = 1e-9\ncheck_stability = false\nstabilisation = 0.05"));
   CHECK(s.solver.kind == SolverSpec::static_equilibrium);
-  CHECK(s.solver.increments == 8);
-  CHECK(s.solver.linear_solver == "ldlt");
-  CHECK(s.solver.tolerance == 1e-9);
-  CHECK_FALSE(s.solver.check_stability);
-  CHECK(s.solver.stabilisation == 0.05);
-  CHECK(parse(scene_with("kind = \"static\"")).solver.stabilisation == 0.1);  // the default
+  CHECK(s.solver.statics.increments == 8);
+  CHECK(s.solver.statics.linear_solver == statics::LinearSolverKind::ldlt);
+  CHECK(s.solver.statics.tolerance == 1e-9);
+  CHECK_FALSE(s.solver.statics.check_stability);
+  CHECK(s.solver.statics.stabilisation == 0.05);
+  CHECK(parse(scene_with("kind = \"static\"")).solver.statics.stabilisation == 0.1);  // the default
 }
 
 TEST_CASE("Static solver errors name the line and the key", "[scene]") {

@@ -1,10 +1,11 @@
-// The three sparse solvers give the same static solution, and the direct ones tell a
-// positive definite tangent from an indefinite one.
+// The sparse solvers give the same static solution, "auto" picks CHOLMOD for small
+// problems, and the direct ones tell a positive definite tangent from an indefinite one.
 #include <catch2/catch.hpp>
 
 #include <memory>
 
 #include "point_blocks.hpp"
+#include "core/errors.hpp"
 #include "statics/projected_newton.hpp"
 
 using namespace latmpm;
@@ -36,24 +37,44 @@ std::unique_ptr<Bar> clamped_bar() {
 }
 }  // namespace
 
-TEST_CASE("LDLT, CG and CHOLMOD give the same displacements", "[statics]") {
+TEST_CASE("LDLT, CG, CHOLMOD and hypre's AMG give the same displacements", "[statics]") {
   const auto owner = clamped_bar();
   Bar& bar = *owner;
   std::vector<Vector> solutions;
-  for (LinearSolverKind kind : {LinearSolverKind::ldlt, LinearSolverKind::cg, LinearSolverKind::cholmod}) {
+  for (LinearSolverKind kind :
+       {LinearSolverKind::ldlt, LinearSolverKind::cg, LinearSolverKind::cholmod, LinearSolverKind::amg}) {
     CAPTURE(to_string(kind));
     Vector u = Vector::Zero(Eigen::Index(bar.problem.dof_count()));
     SparseSolver solver(kind, 1e-12);
+    std::vector<Vec3> nodes;
+    for (size_t n = 0; n < bar.problem.band().node_count(); ++n) nodes.push_back(bar.problem.band().node_position(n));
+    solver.set_node_positions(nodes);
     const NewtonReport report = solve_equilibrium(bar.problem, bar.dirichlet, u, solver);
     CAPTURE(report.failure, report.residual, report.linear_iterations);
     REQUIRE(report.converged);
     CHECK(report.iterations == 1);
     CHECK(report.linear_residual <= 1e-10);
-    if (kind == LinearSolverKind::cg) CHECK(report.linear_iterations > 1);
+    if (kind == LinearSolverKind::cg || kind == LinearSolverKind::amg) CHECK(report.linear_iterations > 1);
+    if (kind == LinearSolverKind::amg) CHECK_THAT(solver.describe(), Catch::Contains("3 rigid-body rotations"));
     solutions.push_back(u);
   }
   CHECK((solutions[1] - solutions[0]).norm() <= 1e-8 * solutions[0].norm());
   CHECK((solutions[2] - solutions[0]).norm() <= 1e-10 * solutions[0].norm());
+  CHECK((solutions[3] - solutions[0]).norm() <= 1e-8 * solutions[0].norm());
+}
+
+TEST_CASE("The automatic choice takes CHOLMOD unless its factor exceeds the memory budget", "[statics]") {
+  const auto owner = clamped_bar();
+  Bar& bar = *owner;
+  for (const double budget : {1e9, 1e3}) {  // bytes: the bar's L needs ~1e5
+    CAPTURE(budget);
+    Vector u = Vector::Zero(Eigen::Index(bar.problem.dof_count()));
+    SparseSolver solver(parse_linear_solver("auto"), 1e-12);
+    solver.set_factor_memory_budget(budget);
+    REQUIRE(solve_equilibrium(bar.problem, bar.dirichlet, u, solver).converged);
+    CHECK_THAT(solver.describe(), Catch::StartsWith(budget > 1e6 ? "auto: cholmod" : "auto: amg"));
+  }
+  CHECK_THROWS_AS(parse_linear_solver("multigrid", "scene.toml", "solver.linear_solver"), InputError);
 }
 
 TEST_CASE("The direct solvers report an indefinite matrix as not positive definite", "[statics]") {

@@ -1,0 +1,31 @@
+// The static solver's settings as a scene gives them ([solver] kind = "static", docs/scene.md):
+// one struct with its defaults, read by scene/solver_readers.cpp and taken by the static run
+// (libs/static_run) as it is. A new setting is a field here and its key in that reader.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "mpm/real.hpp"
+
+namespace latmpm::statics {
+
+using mpm::Real;
+
+enum class LinearSolverKind { ldlt, cg, cholmod, amg, automatic };
+
+// "ldlt", "cg", "cholmod", "amg", "auto" (sparse_solver.cpp: the one table).
+std::string to_string(LinearSolverKind kind);
+std::vector<std::string> linear_solver_names();
+// Throws InputError(where, field, ...) for an unknown name.
+LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where = "",
+                                     const std::string& field = "");
+
+struct StaticSettings {
+  int increments = 20;  // equilibrium steps to the end travel (displacement_control.hpp)
+  LinearSolverKind linear_solver = LinearSolverKind::automatic;  // auto: CHOLMOD unless its factor is too big (sparse_solver.hpp)
+  Real tolerance = 1e-8;  // relative residual force of each increment (NewtonOptions)
+  bool check_stability = true;  // end the path at the first unstable equilibrium
+  Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
+};
+
+}  // namespace latmpm::statics
