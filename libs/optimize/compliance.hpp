@@ -10,7 +10,9 @@
 // ∂C/∂u = f_int(u) = f at equilibrium, K_T λ = f (K_T the true tangent, the static solver's
 // unprojected Hessian) gives
 //   ∂C/∂ρ_q = V_q (∂E_q/∂ρ_q / E) [ψ(F_q; E) − P(F_q; E) : ∇λ_q],
-// which is the closed form again where λ = u (linear elasticity: P : ∇u = 2ψ).
+// which is the closed form again where λ = u (linear elasticity: P : ∇u = 2ψ). The
+// neo-Hookean solve adds the static solver's affine stabilisation (β = 0.1 μ): its energy
+// is part of C and of the gradient (compliance.cpp).
 // Inactive points (outside the narrow band) carry no material and no unknowns.
 #pragma once
 #include <vector>
