@@ -17,7 +17,8 @@
 // the nodes one cell outside the material, which have no mass, and a particle that has just
 // entered a cell gives its far nodes a mass that vanishes with its distance to the face
 // while its α∇S force does not vanish as fast (α ~ d^{2/7}). Such a node l (mass below a
-// fraction of ρ h³, not held by a body) gets no acceleration of its own: its mass, momentum
+// fraction of ρ h³, not held by a body — or held, but with no mass at all: inside a rigid
+// plate of points) gets no acceleration of its own: its mass, momentum
 // and force go to the sizeable nodes i around it with coefficients C_li, and after the grid
 // update its velocity and velocity change are read back, v_l = Σ_i C_li v_i. The same C
 // both ways with Σ_i C_li = 1 keeps mass, momentum and force exactly and makes the
@@ -283,8 +284,8 @@ template <class Fn>
 }
 }  // namespace ddmp_grid_detail
 
-// Finds the nodes that hand on their lanes — mass below `small_mass`, not held by a body
-// (lane::constraint), a node with mass within one cell (else neither their force nor their
+// Finds the nodes that hand on their lanes — mass below `small_mass` and not held by a body
+// (lane::constraint), or held with no mass at all; a node with mass within one cell (else neither their force nor their
 // velocity enters anything), sizeable nodes (mass ≥ small_mass) among its 124 neighbours
 // (neighbour_offsets) — and their distribution coefficients C_li = w(d) (c₀ + c · d),
 // d = i − l in cells over those sizeable nodes i, w(d) = 2^(−|d|₁): the weighted
