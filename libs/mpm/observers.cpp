@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "mpm/bucket_partition.hpp"
 #include "mpm/deformation.hpp"
 #include "mpm/simd.hpp"
 
@@ -122,7 +123,7 @@ Real RecordLayerForce::operator()(const Simulation& sim) const {
   const SolverState& state = sim.state();
   const Particles& ps = state.particles;
   const auto& runs = state.buckets.runs();
-  Real stress_volume = 0, volume = 0;
+  std::vector<Real> rows;  // per bucket: Σ σ_zz V, Σ V of its record points
   for (const Bucket& b : state.buckets.buckets()) {
     Pack bucket_stress_volume{}, bucket_volume{};
     for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
@@ -153,9 +154,10 @@ Real RecordLayerForce::operator()(const Simulation& sim) const {
     }
     Real bucket_sv = 0, bucket_v = 0;
     for (int q = 0; q < pack_width; ++q) bucket_sv += bucket_stress_volume[q], bucket_v += bucket_volume[q];
-    stress_volume += bucket_sv;
-    volume += bucket_v;
+    rows.insert(rows.end(), {bucket_sv, bucket_v});
   }
+  const auto sums = sim.domain().sum_in_order(bucket_order_keys(state.buckets.buckets()), rows, 2);
+  const Real stress_volume = sums[0], volume = sums[1];
   return volume > 0 ? area_ * stress_volume / volume : 0;
 }
 
