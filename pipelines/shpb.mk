@@ -7,7 +7,8 @@
 #   G4, grids G2-G4 on B3.
 # Results in results/shpb/{paper,quick}/: friction/, meshes/, grids/ (latmpm-post: summary.md,
 # metrics.csv, comparison.csv against mu = 0.1, the finest mesh and the finest grid, plots of
-# f_i against time), run-<case>/ (series.csv: load_driven = f_i, load_fixed = f_t).
+# f_i against time), forces.png (f_i, f_t and f_a of the mu = 0.1 run, paper B Fig. 8), run-<case>/
+# (series.csv: load_driven = f_i, load_fixed = f_t, load_average = f_a, Eq. 14).
 # Chain: latmpm-hexmesh --cylinder -> latmpm-solve pipelines/shpb/shpb.toml -> latmpm-post.
 include pipelines/common.mk
 
@@ -34,8 +35,10 @@ shpb:
 	$(MAKE) build
 	$(MAKE) shpb-results
 
+SH_FORCES_RUN := $(firstword $(filter mu0.1-%,$(foreach r,$(SH_FRICTION),$(call pipeline_field,$r,1))))
+
 shpb-results: $(if $(SH_FRICTION),$(SH_OUT)/friction/summary.md) $(if $(SH_MESHES),$(SH_OUT)/meshes/summary.md) \
-    $(if $(SH_GRIDS),$(SH_OUT)/grids/summary.md)
+    $(if $(SH_GRIDS),$(SH_OUT)/grids/summary.md) $(if $(SH_FORCES_RUN),$(SH_OUT)/forces.png)
 	@echo "shpb: results in $(SH_OUT)/{friction,meshes,grids}/summary.md"
 
 # Mesh level k (B<k>): core 2k, ring k, axial 4k divisions (docs/paper-b.md).
@@ -46,6 +49,10 @@ $(SH_OUT)/b%.h5: | $(BIN)/latmpm-hexmesh
 $(eval $(call pipeline_post,$(SH_OUT)/friction,$(call pipeline_label_runs,$(SH_OUT),$(SH_FRICTION)),--kind compression --load load_driven --reference $(firstword $(filter mu0.1-%,$(foreach r,$(SH_FRICTION),$(call pipeline_field,$r,1)))),SHPB specimen: friction study (paper B Sec. 3.4),$(SH_SRC)/notes.md))
 $(eval $(call pipeline_post,$(SH_OUT)/meshes,$(call pipeline_label_runs,$(SH_OUT),$(SH_MESHES)),--kind compression --load load_driven --reference $(SH_MESH_REF),SHPB specimen: CPDI meshes on G4 (paper B Sec. 3.4),$(SH_SRC)/notes.md))
 $(eval $(call pipeline_post,$(SH_OUT)/grids,$(call pipeline_label_runs,$(SH_OUT),$(SH_GRIDS)),--kind compression --load load_driven --reference $(SH_GRID_REF),SHPB specimen: grids on $(SH_GRID_MESH) (paper B Sec. 3.4),$(SH_SRC)/notes.md))
+
+# Paper B Fig. 8: f_i, f_t and f_a of the mu = 0.1 run against time.
+$(SH_OUT)/forces.png: $(SH_OUT)/run-$(SH_FORCES_RUN)/done $(SH_SRC)/plot_forces.gp
+	gnuplot -e "csv='$(SH_OUT)/run-$(SH_FORCES_RUN)/series.csv'; png='$@'; label='SHPB $(SH_FORCES_RUN): contact forces and f_a'" $(SH_SRC)/plot_forces.gp
 
 $(SH_OUT)/friction/summary.md $(SH_OUT)/meshes/summary.md $(SH_OUT)/grids/summary.md: pipelines/shpb.mk
 

@@ -2,6 +2,7 @@
 // are data; the solver applies their boundary conditions in the grid update.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "mpm/material.hpp"
 #include "mpm/real.hpp"
@@ -16,6 +17,7 @@ enum class BodyRole {
 };
 
 std::string to_string(BodyRole role);
+std::vector<std::string> body_role_names();  // names.cpp
 BodyRole parse_body_role(const std::string& name, const std::string& where = "",
                          const std::string& field = "");
 

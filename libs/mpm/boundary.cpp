@@ -109,14 +109,27 @@ BoundaryReport RigidBoundary::report() const {
 void PenaltyBoundary::constrain(BoundaryPass& pass) {
   // Its push is the sum of its points' contact forces from the contact stage.
   reaction = Vec3::Zero() + pass.contact->reaction[index];
+  spring_energy = pass.contact->spring_energy[index];
+  friction_dissipation += pass.contact->friction_work[index];
 }
 
 void PenaltyBoundary::advance(const BoundaryPass& pass, BoundaryLedger& ledger) {
-  // Its power on the model is that of its contact forces at the points' velocities, the mean
-  // of the step's start and end (rigid_contact.hpp): the energy its springs give back counts
-  // as work put in, and their stretch and the friction's loss stay outside the balance.
-  const Real power = Real(0.5) * (pass.contact->power[index] + (*pass.contact_power_end)[index]);
-  advance_rigid(*this, power, pass, ledger);
+  // Its power is its own, f·V, as for a no-slip body: the work it does on its springs, which
+  // pass it on to the points less what they hold and what friction dissipates
+  // (rigid_contact.hpp, ContactForces). Paper B measures f_i V the same way.
+  advance_rigid(*this, reaction.dot(state.velocity), pass, ledger);
+  ledger.contact_energy += spring_energy;
+  ledger.friction_dissipation += friction_dissipation;
+}
+
+void PenaltyBoundary::save(CheckpointWriter& out) const {
+  RigidBoundary::save(out);
+  out.scalar("friction_dissipation", friction_dissipation);
+}
+
+void PenaltyBoundary::load(const CheckpointReader& in) {
+  RigidBoundary::load(in);
+  friction_dissipation = in.scalar("friction_dissipation");
 }
 
 const RigidBoundary* as_rigid(const Boundary& boundary) {

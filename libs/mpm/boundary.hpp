@@ -55,7 +55,6 @@ struct BoundaryPass {
   Vec3 gravity;    // m/s²
   const Reactions* node_reactions = nullptr;  // the node update's sums per point body (grid_update.hpp)
   const ContactForces* contact = nullptr;     // the contact stage's forces (rigid_contact.hpp)
-  const std::vector<Real>* contact_power_end = nullptr;  // per rigid body, W, at the step's end velocities
 };
 
 // The energy bookkeeping the boundaries feed after a step (J, W).
@@ -64,6 +63,8 @@ struct BoundaryLedger {
   Real constraint_power = 0;  // W: of the driven point bodies (StepDiagnostics::constraint_work)
   Real prescribed_work = 0;   // J: this step's work of rigid bodies of prescribed motion
   Real energy = 0;            // J: kinetic + potential energy of free rigid bodies
+  Real contact_energy = 0;    // J: held in the penalty bodies' contact springs now
+  Real friction_dissipation = 0;  // J: dissipated by the penalty bodies' friction since the start
   Real max_speed = 0;         // m/s: fastest boundary (enters the stable time step)
 };
 
@@ -112,11 +113,18 @@ struct RigidBoundary {
 };
 
 // A geometric rigid body in penalty contact with friction (rigid_contact.hpp): its nodes stay
-// free; the contact stage pushes the points it touches.
+// free; the contact stage pushes the points it touches. Its work is its own power on its
+// springs, f·V (the anchors move with it); of that the springs hold ½|f|²/κ and friction
+// dissipates the anchors' slip, both reported beside the work.
 struct PenaltyBoundary : RigidBoundary {
+  Real spring_energy = 0;         // J, in its springs at the last contact pass
+  Real friction_dissipation = 0;  // J, since the start
+
   void constrain(BoundaryPass& pass);
   void impose(BoundaryPass&, int) {}
   void advance(const BoundaryPass& pass, BoundaryLedger& ledger);
+  void save(CheckpointWriter& out) const;
+  void load(const CheckpointReader& in);
 };
 
 // Whether T has every hook of a boundary (a new alternative must, before it joins the set).

@@ -18,7 +18,8 @@ class Hdf5File;
 namespace latmpm::mpm {
 
 // 1: positional scalars (before issue 13); 2: named datasets.
-inline constexpr int64_t checkpoint_format_version = 3;  // 3: plastic_dissipation, cpdi_domain
+// 3: plastic_dissipation, cpdi_domain; 4: contact_energy, friction_dissipation.
+inline constexpr int64_t checkpoint_format_version = 4;
 
 // How a value type is stored: its components per row and the dataset element type.
 template <class T>

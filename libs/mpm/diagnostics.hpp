@@ -45,13 +45,19 @@ struct StepDiagnostics {
   // Energy accounting (docs/solver.md, "Energy"). constraint_work: ∫ Σ r · v dt of the
   // point-defined fixed and driven bodies (zero for a fixed base); gravity_work: gravity's
   // work on the deformable material; rigid_energy: Σ kinetic + potential energy of the free
-  // rigid bodies; energy_error: (kinetic + strain + plastic_dissipation + rigid_energy) − their initial value −
+  // rigid bodies; energy_error: (kinetic + strain + plastic_dissipation + rigid_energy + contact_energy +
+  // friction_dissipation) − their initial value −
   // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact,
   // dissipation-free scheme; MPM's grid-to-particle projection and FLIP/PIC blending
   // dissipate a little, so it drifts negative.
   Real constraint_work = 0;
   Real gravity_work = 0;
   Real rigid_energy = 0;
+  // Penalty bodies (rigid_contact.hpp): contact_energy, held in their contact springs now;
+  // friction_dissipation, lost to their Coulomb friction since the start. Their work is
+  // their own power f·V, so both enter energy_error beside the material's energies.
+  Real contact_energy = 0;
+  Real friction_dissipation = 0;
   Real energy_error = 0;
 };
 

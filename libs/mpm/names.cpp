@@ -1,12 +1,14 @@
 // Scene names of the solver's enumerations, both ways: one table per choice, which the scene
-// reader, its error messages and `latmpm-solve --list` all read. A new shape function, scheme
-// or material model is one row here.
+// reader, its error messages and `latmpm-solve --list` all read. A new shape function, scheme,
+// material model, body role or rigid-body shape, motion or coupling is one row here; a new
+// shape function also its default CFL and scheme below.
 #include <array>
 #include <utility>
 
 #include "core/errors.hpp"
 #include "mpm/body.hpp"
 #include "mpm/material.hpp"
+#include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
 #include "mpm/shape_function_kind.hpp"
 
@@ -53,6 +55,12 @@ constexpr std::array<std::pair<MaterialKind, const char*>, 3> material_names{{
     {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}, {MaterialKind::j2, "j2"}}};
 constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{
     {BodyRole::deformable, "deformable"}, {BodyRole::fixed, "fixed"}, {BodyRole::driven, "driven"}}};
+constexpr std::array<std::pair<RigidShape, const char*>, 2> rigid_shape_names_{{
+    {RigidShape::box, "box"}, {RigidShape::half_space, "half_space"}}};
+constexpr std::array<std::pair<RigidMotion, const char*>, 3> rigid_motion_names_{{
+    {RigidMotion::driven, "driven"}, {RigidMotion::free, "free"}, {RigidMotion::fixed, "fixed"}}};
+constexpr std::array<std::pair<RigidCoupling, const char*>, 2> rigid_coupling_names_{{
+    {RigidCoupling::no_slip, "no_slip"}, {RigidCoupling::penalty, "penalty"}}};
 }  // namespace
 
 std::string to_string(ShapeFunctionKind kind) { return name_of(kind, shape_names); }
@@ -74,9 +82,19 @@ std::string to_string(BodyRole role) { return name_of(role, role_names); }
 std::vector<std::string> shape_function_names() { return names_in(shape_names); }
 std::vector<std::string> update_scheme_names() { return names_in(scheme_names); }
 std::vector<std::string> material_kind_names() { return names_in(material_names); }
+std::vector<std::string> body_role_names() { return names_in(role_names); }
 BodyRole parse_body_role(const std::string& name, const std::string& where, const std::string& field) {
   return parse_name(name, role_names, where, field);
 }
+std::string to_string(RigidShape shape) { return name_of(shape, rigid_shape_names_); }
+std::string to_string(RigidMotion motion) { return name_of(motion, rigid_motion_names_); }
+std::string to_string(RigidCoupling coupling) { return name_of(coupling, rigid_coupling_names_); }
+std::vector<std::string> rigid_shape_names() { return names_in(rigid_shape_names_); }
+std::vector<std::string> rigid_motion_names() { return names_in(rigid_motion_names_); }
+std::vector<std::string> rigid_coupling_names() { return names_in(rigid_coupling_names_); }
+RigidShape parse_rigid_shape(const std::string& name) { return parse_name(name, rigid_shape_names_, "", ""); }
+RigidMotion parse_rigid_motion(const std::string& name) { return parse_name(name, rigid_motion_names_, "", ""); }
+RigidCoupling parse_rigid_coupling(const std::string& name) { return parse_name(name, rigid_coupling_names_, "", ""); }
 
 double default_cfl(ShapeFunctionKind shape) {
   switch (shape) {
@@ -89,6 +107,14 @@ double default_cfl(ShapeFunctionKind shape) {
     case ShapeFunctionKind::cpdi1: return 0.3;     // not measured: the conservative value
   }
   return 0.3;
+}
+
+UpdateScheme default_scheme(ShapeFunctionKind shape) {
+  // Linear shapes keep an O(1/h) gradient at a node that a particle entering an empty cell
+  // has just given a tiny mass: USL then inverts that particle (measured: the tiny column at
+  // step 1905). MUSL's remapped nodal velocity stays bounded, so it is their default
+  // (docs/scene.md). DDMP hands such nodes on to their neighbours and runs USL, as the paper.
+  return shape == ShapeFunctionKind::linear ? UpdateScheme::musl : UpdateScheme::usl;
 }
 
 }  // namespace latmpm::mpm

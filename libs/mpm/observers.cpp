@@ -161,4 +161,37 @@ Real RecordLayerForce::operator()(const Simulation& sim) const {
   return volume > 0 ? area_ * stress_volume / volume : 0;
 }
 
+namespace {
+bool counts(const Simulation& sim, size_t p) {
+  return sim.bodies()[size_t(sim.particles().body[p])].role == BodyRole::deformable && sim.particles().volume0[p] > 0;
+}
+}  // namespace
+
+Real AverageStressForce::initial_cross_section(const Simulation& sim, const Vec3& axis) {
+  const Particles& ps = sim.particles();
+  const Vec3 a = axis.normalized();
+  Real lo = std::numeric_limits<Real>::infinity(), hi = -lo, volume0 = 0;
+  for (size_t p = 0; p < ps.size(); ++p) {
+    if (!counts(sim, p)) continue;
+    const Real along = ps.position[p].dot(a), reach = ps.half_size0[p].dot(a.cwiseAbs());
+    lo = std::min(lo, along - reach), hi = std::max(hi, along + reach);
+    volume0 += ps.volume0[p];
+  }
+  return hi > lo ? volume0 / (hi - lo) : 0;
+}
+
+Real AverageStressForce::operator()(const Simulation& sim) const {
+  const Particles& ps = sim.particles();
+  const Vec3& a = axis_;
+  Real stress_volume = 0, volume = 0;
+  for (size_t p = 0; p < ps.size(); ++p) {
+    if (!counts(sim, p)) continue;
+    const Real along = a.dot(to_matrix(ps.stress[p]) * a);
+    const Real v = ps.deformation[p].determinant() * ps.volume0[p];
+    stress_volume += along * v;
+    volume += v;
+  }
+  return volume > 0 ? area_ * stress_volume / volume : 0;
+}
+
 }  // namespace latmpm::mpm

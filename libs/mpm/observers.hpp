@@ -36,4 +36,26 @@ class RecordLayerForce {
   Real area_;  // m²
 };
 
+// Paper B's averaged force f_a (Eq. 14): A0 times the current-volume average of the stress
+// along the loading axis a over every deformable point, f_a = A0 Σ σ_aa v_p / Σ v_p with
+// v_p = J_p V0_p, in N, tension positive (the series negates it). A0 = ΣV0 / l0, l0 the
+// deformable points' extent along a (their domains' half-sizes included) in the state the
+// simulation starts from (initial_cross_section): the initial cross-section of a prismatic
+// specimen as discretised (paper B: π d0²/4 of the cylinder; the mesh's own area keeps f_a
+// consistent with its volume, docs/paper-b.md). Unlike the contact forces, f_a averages the
+// whole specimen: it smooths the waves and leaves out the contact layer (paper B Sec. 4).
+class AverageStressForce {
+ public:
+  AverageStressForce(Real area, const Vec3& axis) : axis_(axis.normalized()), area_(area) {}
+  // A0 (m²) of the simulation's deformable points as they are now: call it before the first
+  // step (a resumed run takes it before loading its checkpoint).
+  static Real initial_cross_section(const Simulation& sim, const Vec3& axis);
+  Real operator()(const Simulation& sim) const;
+  Real area() const { return area_; }
+
+ private:
+  Vec3 axis_;  // unit
+  Real area_;  // m², A0
+};
+
 }  // namespace latmpm::mpm

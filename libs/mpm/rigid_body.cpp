@@ -10,17 +10,6 @@
 
 namespace latmpm::mpm {
 
-std::string to_string(RigidShape shape) { return shape == RigidShape::box ? "box" : "half_space"; }
-std::string to_string(RigidMotion motion) {
-  switch (motion) {
-    case RigidMotion::driven: return "driven";
-    case RigidMotion::free: return "free";
-    case RigidMotion::fixed: return "fixed";
-  }
-  return "?";
-}
-std::string to_string(RigidCoupling coupling) { return coupling == RigidCoupling::no_slip ? "no_slip" : "penalty"; }
-
 void validate(const RigidBodySettings& b, const std::string& where) {
   const std::string key = "rigid_bodies." + b.name + ".";
   if (b.shape == RigidShape::box) {

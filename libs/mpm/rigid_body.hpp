@@ -50,9 +50,16 @@ enum class RigidCoupling {
   penalty,  // penalty contact of the points against its surface, Coulomb friction (rigid_contact.hpp)
 };
 
+// Their names in scenes (names.cpp: one table each); parse_* throws InputError for another.
 std::string to_string(RigidShape shape);
 std::string to_string(RigidMotion motion);
 std::string to_string(RigidCoupling coupling);
+std::vector<std::string> rigid_shape_names();
+std::vector<std::string> rigid_motion_names();
+std::vector<std::string> rigid_coupling_names();
+RigidShape parse_rigid_shape(const std::string& name);
+RigidMotion parse_rigid_motion(const std::string& name);
+RigidCoupling parse_rigid_coupling(const std::string& name);
 
 struct RigidBodySettings {
   std::string name;

@@ -53,10 +53,12 @@ ContactForce penalty_contact_force(const Vec3& anchor, const Vec3& x, const Cont
       // Relax the anchor toward the closest point onto the friction cone: |f_t| = μ f_n.
       tangential = size > 0 ? Vec3(tangential * (limit / size)) : Vec3::Zero();
       out.sliding = true;
+      out.friction_work = limit * (size - limit) / stiffness;
     }
   }
   out.force = normal_force * n + tangential;
   out.anchor = closest + tangential / stiffness;
+  out.spring_energy = Real(0.5) * out.force.squaredNorm() / stiffness;
   return out;
 }
 
@@ -80,11 +82,12 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
     if (bodies[k].coupling == RigidCoupling::penalty) penalty.push_back(k);
   out.force.assign(n, Vec3::Zero());
   out.reaction.assign(nb, Vec3::Zero());
-  out.power.assign(nb, 0);
+  out.spring_energy.assign(nb, 0);
+  out.friction_work.assign(nb, 0);
   out.touching.clear();
   std::vector<std::vector<uint32_t>> touching(chunks);
   std::vector<Vec3> chunk_reaction(chunks * nb, Vec3::Zero());
-  std::vector<Real> chunk_power(chunks * nb, 0);
+  std::vector<Real> chunk_spring(chunks * nb, 0), chunk_friction(chunks * nb, 0);
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     for (size_t p = c * chunk; p < std::min(n, (c + 1) * chunk); ++p) {
       const ContactMaterial& material = materials[size_t(ps.body[p])];
@@ -115,20 +118,19 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
       anchor = f.anchor - d;
       out.force[p] = f.force;
       chunk_reaction[c * nb + size_t(k)] += f.force;
-      chunk_power[c * nb + size_t(k)] += f.force.dot(ps.velocity[p]);
+      chunk_spring[c * nb + size_t(k)] += f.spring_energy;
+      chunk_friction[c * nb + size_t(k)] += f.friction_work;
       touching[c].push_back(uint32_t(p));
     }
   });
   for (size_t c = 0; c < chunks; ++c) {
     out.touching.insert(out.touching.end(), touching[c].begin(), touching[c].end());
-    for (size_t k = 0; k < nb; ++k) out.reaction[k] += chunk_reaction[c * nb + k], out.power[k] += chunk_power[c * nb + k];
+    for (size_t k = 0; k < nb; ++k) {
+      out.reaction[k] += chunk_reaction[c * nb + k];
+      out.spring_energy[k] += chunk_spring[c * nb + k];
+      out.friction_work[k] += chunk_friction[c * nb + k];
+    }
   }
-}
-
-std::vector<Real> contact_power(const Particles& ps, const ContactForces& contact) {
-  std::vector<Real> power(contact.reaction.size(), 0);
-  for (uint32_t p : contact.touching) power[size_t(ps.contact_body[p])] += contact.force[p].dot(ps.velocity[p]);
-  return power;
 }
 
 Real stable_contact_rate_squared(const Particles& ps, const std::vector<ContactMaterial>& materials,

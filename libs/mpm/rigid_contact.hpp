@@ -42,6 +42,11 @@ struct ContactForce {
   Vec3 force = Vec3::Zero();
   Vec3 anchor = Vec3::Zero();
   bool sliding = false;  // the friction cone limited the tangential force
+  // Energy (J): stored in the spring after the relaxation, ½ |f|²/κ; dissipated by the
+  // relaxation, |f_t| · slip with slip = (|f_t trial| − |f_t|)/κ the anchor's move along the
+  // surface (the return mapping's plastic work, backward Euler: the force at the step's end).
+  Real spring_energy = 0;
+  Real friction_work = 0;
 };
 ContactForce penalty_contact_force(const Vec3& anchor, const Vec3& x, const ContactProbe& probe, Real stiffness,
                                    Real friction);
@@ -61,17 +66,19 @@ struct ContactMaterial {
 
 // What a contact pass leaves: per point its force (N, zero when not in contact), the points
 // in contact in ascending order, and per rigid body the sum of its points' forces — the
-// force of the body on the model (N; zero for no-slip bodies) — and their power at the
-// points' velocities then, Σ f_p·v_p (W).
+// force of the body on the model (N; zero for no-slip bodies) —, the energy its springs hold
+// (J) and the energy its friction dissipated in this pass (J).
+//
+// Energy: the body does work f·V on its springs (the anchors move with it); the springs pass
+// f·v_p to the points, keep ½|f|²/κ and lose the friction's part when an anchor slides:
+// ∫ f·V dt = ∫ f·v_p dt + spring energy + friction work (docs/solver.md, "Energy").
 struct ContactForces {
   std::vector<Vec3> force;
   std::vector<uint32_t> touching;
   std::vector<Vec3> reaction;
-  std::vector<Real> power;
+  std::vector<Real> spring_energy;
+  std::vector<Real> friction_work;
 };
-
-// Per rigid body, the power of its contact forces at the points' present velocities (W).
-std::vector<Real> contact_power(const Particles& ps, const ContactForces& contact);
 
 // Updates every deformable point's contact with the penalty bodies at the points' and
 // bodies' current positions (history in ps.contact_body / contact_anchor, which must be

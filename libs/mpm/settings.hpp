@@ -19,6 +19,8 @@ std::string to_string(UpdateScheme scheme);
 std::vector<std::string> update_scheme_names();  // names.cpp
 UpdateScheme parse_update_scheme(const std::string& name, const std::string& where = "",
                                  const std::string& field = "");
+// The scheme a run takes unless it names one: MUSL for linear shapes, USL otherwise (names.cpp).
+UpdateScheme default_scheme(ShapeFunctionKind shape);
 
 struct Settings {
   Real cell_size = 0;  // h, m: background grid cell, nodes at i·h (the origin is a node)

@@ -28,6 +28,8 @@ void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
   visit("constraint_work", d.constraint_work);
   visit("gravity_work", d.gravity_work);
   visit("rigid_energy", d.rigid_energy);
+  visit("contact_energy", d.contact_energy);
+  visit("friction_dissipation", d.friction_dissipation);
   visit("energy_error", d.energy_error);
   visit("carried_max_speed", carried.max_speed);
   visit("carried_max_wave_speed", carried.max_wave_speed);

@@ -143,7 +143,8 @@ void update_contact_forces(SolverState& s, StepContext& c) {
   update_penalty_contacts(s.particles, c.contact_materials, c.rigid_bodies, s.diagnostics.rigid, c.contact);
   for (size_t r = 0; r < c.contact.reaction.size(); ++r) {
     c.contact.reaction[r] = c.domain.reduce_sum(c.contact.reaction[r]);
-    c.contact.power[r] = c.domain.reduce_sum(c.contact.power[r]);
+    c.contact.spring_energy[r] = c.domain.reduce_sum(c.contact.spring_energy[r]);
+    c.contact.friction_work[r] = c.domain.reduce_sum(c.contact.friction_work[r]);
   }
 }
 

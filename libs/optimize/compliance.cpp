@@ -17,6 +17,64 @@ Real SimpMaterial::modulus_derivative(Real rho) const {
   return penalty * std::pow(rho, penalty - 1) * (young_modulus - Emin);
 }
 
+namespace {
+
+using namespace latmpm::statics;
+
+constexpr Real neo_hookean_stabilisation = 0.1;  // β (× μ), docs/statics.md
+
+// The adjoint of Eq. (19) for a nonlinear energy: K_T(u) λ = f on the free unknowns (λ = 0
+// where prescribed), K_T the true (unprojected) tangent at equilibrium.
+Vector adjoint_displacement(StaticProblem& problem, const Dirichlet& dirichlet, const Vector& u, SparseSolver& solver) {
+  problem.assemble_hessian(u, false);
+  SparseMatrix& K = problem.hessian();
+  constrain_rows_and_columns(K, dirichlet.fixed, mean_diagonal(K));
+  Vector rhs = problem.external_force();
+  for (size_t i = 0; i < dirichlet.fixed.size(); ++i)
+    if (dirichlet.fixed[i]) rhs[Eigen::Index(i)] = 0;
+  if (!solver.factorize(K))
+    throw NumericalError("compliance: the tangent at equilibrium is not positive definite (a buckled design): no adjoint");
+  LinearSolveStats stats;
+  return solver.solve(rhs, stats);
+}
+
+// Point p's affine stabilisation terms (statics/affine_stabilisation.hpp): with
+// r_k(v) = v_k − v(X_p) − (Σ_j v_j ⊗ ∇S_jp)(X_k − X_p) over its n_p stencil nodes, the
+// means (1/n_p) Σ_k |r_k(u)|² and (1/n_p) Σ_k r_k(u)·r_k(λ): E_s,p = c_p/2 × the first,
+// λ · ∂E_s,p/∂u = c_p × the second.
+struct AffineDepartures {
+  Real uu = 0, ul = 0;
+};
+
+AffineDepartures affine_departures(const NarrowBand& band, size_t p, const Vector& u, const Vector& l) {
+  const uint32_t first = band.point_offset[p], last = band.point_offset[p + 1];
+  const Eigen::Vector3i& origin = band.node[band.entry_node[first]];
+  auto position = [&](uint32_t e) -> Vec3 { return band.cell_size * (band.node[band.entry_node[e]] - origin).cast<Real>(); };
+  auto at = [&](const Vector& v, uint32_t e) -> Vec3 { return v.segment<3>(Eigen::Index(3 * band.entry_node[e])); };
+  Vec3 Xp = Vec3::Zero(), up = Vec3::Zero(), lp = Vec3::Zero();
+  Mat3 Gu = Mat3::Zero(), Gl = Mat3::Zero();
+  for (uint32_t e = first; e < last; ++e) {
+    Xp += band.entry_weight[e] * position(e);
+    up += band.entry_weight[e] * at(u, e);
+    lp += band.entry_weight[e] * at(l, e);
+    Gu += at(u, e) * band.entry_gradient[e].transpose();
+    Gl += at(l, e) * band.entry_gradient[e].transpose();
+  }
+  AffineDepartures d;
+  for (uint32_t e = first; e < last; ++e) {
+    const Vec3 dx = position(e) - Xp;
+    const Vec3 ru = at(u, e) - up - Gu * dx, rl = at(l, e) - lp - Gl * dx;
+    d.uu += ru.squaredNorm();
+    d.ul += ru.dot(rl);
+  }
+  const Real n = Real(last - first);
+  d.uu /= n;
+  d.ul /= n;
+  return d;
+}
+
+}  // namespace
+
 ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<Real>& density,
                                      const std::vector<char>& active, const LoadCase& load_case,
                                      const SimpMaterial& material) {
@@ -31,13 +89,14 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
     point_of.push_back(q);
     X.push_back(grid.position(q));
     half.push_back(Vec3::Constant(grid.spacing() / 2));
-    // ψ is linear in E for linear elasticity: E_q/E scales the point's volume (Eq. 25).
+    // ψ is linear in E (linear elastic and neo-Hookean alike, ν fixed): E_q/E scales the
+    // point's volume (Eq. 25).
     volume.push_back(V * material.modulus(density[q]) / material.young_modulus);
   }
   if (X.empty()) throw NumericalError("compliance: no active quadrature point");
 
   mpm::MaterialParameters solid;
-  solid.kind = mpm::MaterialKind::linear_elastic;
+  solid.kind = material.model;
   solid.young_modulus = material.young_modulus;
   solid.poisson_ratio = material.poisson_ratio;
   const ElasticEnergy energy = ElasticEnergy::from(solid);
@@ -53,7 +112,6 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
       if (solver_point[q] < 0) throw NumericalError("compliance: load '" + load_case.loads[l].name + "' acts on an inactive point");
       force[size_t(solver_point[q])] += load_case.loads[l].force / Real(loaded[l].size());
     }
-  problem.set_point_forces(force);
 
   const NarrowBand& band = problem.band();
   Dirichlet dirichlet(problem.dof_count());
@@ -71,25 +129,66 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   // Linear elasticity: one Newton step solves it; the projected Newton's diagonal shift
   // (docs/statics.md) holds a part the band leaves unsupported, whose residual then stays
   // at the shift's level: accepted up to 1e-4 (its huge compliance steers the optimiser
-  // back), anything worse is a failure.
+  // back), anything worse is a failure. Neo-Hookean: projected Newton to a tight tolerance
+  // (the adjoint below assumes equilibrium; where densities span six orders of magnitude
+  // round-off stalls the residual near 1e-9, accepted up to 1e-8), under the whole load at
+  // once or, where that fails, in 2 or 4 equal load increments.
+  const bool linear = problem.is_quadratic();
+  // Neo-Hookean: the affine stabilisation of the point quadrature's zero-energy modes
+  // (β = 0.1 × μ_q, latmpm-solve's static default, docs/statics.md): a band cell holding
+  // one or two design points has hourglass modes that the linear solve's diagonal shift
+  // holds but that leave the nonlinear equilibrium without a solution. Its energy
+  // c_q/2 (1/n) Σ|r_k|², c_q = β μ V_q / h² ∝ E_q, is part of C and of its gradient.
+  const Real beta = linear ? 0 : neo_hookean_stabilisation;
+  problem.set_stabilisation(beta);
   NewtonOptions options;
-  options.max_iterations = 10;  // iterative refinement where E_min = 1e-9 E makes K ill-conditioned
-  const NewtonReport report = solve_equilibrium(problem, dirichlet, u, solver, options);
-  if (!report.converged && !(report.iterations > 0 && report.residual.back() <= 1e-4))
+  options.max_iterations = linear ? 10 : 30;  // linear: iterative refinement where E_min = 1e-9 E makes K ill-conditioned
+  if (!linear) options.tolerance = 1e-11;
+  const Real accepted = linear ? 1e-4 : 1e-8;
+  auto solved = [&](const NewtonReport& r) {
+    return r.converged || (r.iterations > 0 && r.residual.back() <= accepted);
+  };
+  NewtonReport report;
+  int newton_steps = 0;
+  for (int increments = 1; increments <= (linear ? 1 : 4); increments *= 2) {
+    u.setZero();
+    for (int k = 1; k <= increments; ++k) {
+      std::vector<Vec3> step_force = force;
+      for (Vec3& v : step_force) v *= Real(k) / Real(increments);
+      problem.set_point_forces(step_force);
+      report = solve_equilibrium(problem, dirichlet, u, solver, options);
+      newton_steps += report.iterations;
+      if (!solved(report)) break;
+    }
+    if (solved(report)) break;
+  }
+  if (!solved(report))
     throw NumericalError("compliance: static solve failed: " + report.failure);
+  const Vector adjoint = linear ? u : adjoint_displacement(problem, dirichlet, u, solver);
 
   ComplianceResult r;
   r.gradient.assign(n, 0);
   r.point_displacement.assign(n, Vec3::Zero());
   r.active_points = X.size();
   r.unknowns = problem.dof_count() - dirichlet.count();
+  r.newton_iterations = newton_steps;
   r.external_work = 0.5 * problem.external_force().dot(u);
   const std::vector<Mat3> F = problem.deformation_gradients(u);
   for (size_t p = 0; p < X.size(); ++p) {
     const size_t q = point_of[p];
     const Real psi = energy.density(F[p]);  // ψ(F_q; E), J/m³
     r.compliance += volume[p] * psi;
-    r.gradient[q] = -V * material.modulus_derivative(density[q]) / material.young_modulus * psi;
+    // P : ∇λ_q (= 2ψ for linear elasticity, where λ = u).
+    const Real work = linear ? 2 * psi
+                             : (energy.first_piola(F[p]).array() *
+                                (problem.deformation_gradient(p, adjoint) - Mat3::Identity()).array()).sum();
+    r.gradient[q] = V * material.modulus_derivative(density[q]) / material.young_modulus * (psi - work);
+    if (beta > 0) {  // c_q = c̄ E_q/E with c̄ = β μ V / h²
+      const Real cbar = beta * energy.mu * V / (grid.cell_size * grid.cell_size);
+      const AffineDepartures d = affine_departures(band, p, u, adjoint);
+      r.compliance += volume[p] / V * cbar * 0.5 * d.uu;
+      r.gradient[q] += material.modulus_derivative(density[q]) / material.young_modulus * cbar * (0.5 * d.uu - d.ul);
+    }
     Vec3 up = Vec3::Zero();
     for (uint32_t e = band.point_offset[p]; e < band.point_offset[p + 1]; ++e)
       up += band.entry_weight[e] * u.segment<3>(Eigen::Index(3 * band.entry_node[e]));

@@ -5,16 +5,24 @@
 // in one Newton step (linear elasticity). The compliance is the elastic potential of
 // Eq. (25), C = Σ_q V_q ψ(F_q; E_q) = ½ fᵀu at equilibrium, and its sensitivity the closed
 // form of Eq. (21)-(22): ∂C/∂ρ_q = −V_q (∂E_q/∂ρ_q / E) ψ(F_q; E).
+// Neo-Hookean (paper C Sec. 3.3, 4.3): the same C (the elastic potential), the equilibrium
+// solved by projected Newton, and the sensitivity of Eq. (19) by the adjoint: with
+// ∂C/∂u = f_int(u) = f at equilibrium, K_T λ = f (K_T the true tangent, the static solver's
+// unprojected Hessian) gives
+//   ∂C/∂ρ_q = V_q (∂E_q/∂ρ_q / E) [ψ(F_q; E) − P(F_q; E) : ∇λ_q],
+// which is the closed form again where λ = u (linear elasticity: P : ∇u = 2ψ).
 // Inactive points (outside the narrow band) carry no material and no unknowns.
 #pragma once
 #include <vector>
 
+#include "mpm/material.hpp"
 #include "optimize/design_grid.hpp"
 #include "optimize/load_case.hpp"
 
 namespace latmpm::optimize {
 
 struct SimpMaterial {
+  mpm::MaterialKind model = mpm::MaterialKind::linear_elastic;  // or neo_hookean
   Real young_modulus = 0;   // E of the solid, Pa
   Real poisson_ratio = 0;   // ν
   Real penalty = 3;         // p
@@ -31,6 +39,7 @@ struct ComplianceResult {
   std::vector<Vec3> point_displacement;  // u at the active points (0 where inactive), m
   size_t unknowns = 0;          // free displacement components of the solve
   size_t active_points = 0;
+  int newton_iterations = 0;
 };
 
 // density: ρ_q per quadrature point of `grid`; active: which points are simulated (every

@@ -20,9 +20,25 @@ int extrusion_layers(const DesignGrid& grid) {
   return grid.planar ? std::max(1, int(std::lround(grid.thickness / grid.spacing()))) : 1;
 }
 
+// The lattice coordinates of point l and its mirror images through `mirror`.
+std::vector<Index3> images(const DesignGrid& grid, const Index3& l, const std::vector<SymmetryPlane>& mirror) {
+  std::vector<Index3> out{l};
+  const Index3 n = grid.lattice();
+  for (const SymmetryPlane& plane : mirror) {
+    const size_t count = out.size();
+    for (size_t i = 0; i < count; ++i) {
+      Index3 m = out[i];
+      m[plane.axis] = plane.far_face ? 2 * n[plane.axis] - 1 - m[plane.axis] : -1 - m[plane.axis];
+      out.push_back(m);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
-ExportReport export_design(const DesignGrid& grid, const std::vector<Real>& binary, const std::string& points_path,
+ExportReport export_design(const DesignGrid& grid, const std::vector<Real>& binary,
+                           const std::vector<SymmetryPlane>& mirror, const std::string& points_path,
                            const std::string& stl_path, const Provenance& provenance) {
   ExportReport report;
   const Real s = grid.spacing();
@@ -36,15 +52,15 @@ ExportReport export_design(const DesignGrid& grid, const std::vector<Real>& bina
   points.ppc = grid.per_cell;
   for (size_t q = 0; q < grid.point_count(); ++q) {
     if (!(binary[q] > 0.5)) continue;
-    const Index3 l = grid.lattice_coord(q);
-    for (int layer = 0; layer < layers; ++layer) {
-      const Index3 v(l[0], l[1], grid.planar ? layer : l[2]);
-      accessor.setValueOn(openvdb::Coord(v[0], v[1], v[2]), true);
-      points.position.push_back((v.cast<Real>().array() + 0.5).matrix() * s);
-      points.volume.push_back(s * s * s);
-      points.half_size.push_back(Vec3::Constant(s / 2));
-      points.body.push_back(0);
-    }
+    for (const Index3& l : images(grid, grid.lattice_coord(q), mirror))
+      for (int layer = 0; layer < layers; ++layer) {
+        const Index3 v(l[0], l[1], grid.planar ? layer : l[2]);
+        accessor.setValueOn(openvdb::Coord(v[0], v[1], v[2]), true);
+        points.position.push_back((v.cast<Real>().array() + 0.5).matrix() * s);
+        points.volume.push_back(s * s * s);
+        points.half_size.push_back(Vec3::Constant(s / 2));
+        points.body.push_back(0);
+      }
   }
   report.points = points.size();
   report.solid_volume = Real(points.size()) * s * s * s;

@@ -2,6 +2,8 @@
 //   - a point-set file (docs/formats.md) of its solid quadrature points, on the lattice the
 //     voxelizer uses (x = (i + (k + ½)/n)·h, volume s³ each, body "part"), so latmpm-solve
 //     runs it on the same grid; a planar design is extruded through its thickness;
+//   - mirrored through the scene's symmetry planes (load_case.hpp), so that a half model
+//     exports the whole part;
 //   - a closed triangle surface: a signed field over the solid voxels (size s) whose zero
 //     iso-surface, meshed by OpenVDB's volumeToMesh (libs/levelset), lies on the faces between
 //     solid and void voxels, written as STL in millimetres.
@@ -11,6 +13,7 @@
 
 #include "core/provenance.hpp"
 #include "optimize/design_grid.hpp"
+#include "optimize/load_case.hpp"
 
 namespace latmpm::optimize {
 
@@ -23,7 +26,8 @@ struct ExportReport {
 };
 
 // Writes `points_path` (HDF5) and `stl_path` (binary STL, mm); either may be empty (skipped).
-ExportReport export_design(const DesignGrid& grid, const std::vector<Real>& binary, const std::string& points_path,
+ExportReport export_design(const DesignGrid& grid, const std::vector<Real>& binary,
+                           const std::vector<SymmetryPlane>& mirror, const std::string& points_path,
                            const std::string& stl_path, const Provenance& provenance);
 
 }  // namespace latmpm::optimize

@@ -86,6 +86,7 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
       << "compliance_refined_J = " << number(o.compliance_refined) << "  # binary design, grid refined " << scene.refine
       << " times\n"
       << "connectivity_corrections = " << o.corrections << "\n"
+      << "linear_fallbacks = " << o.result.linear_fallbacks << "  # neo-Hookean iterations stepped on the linear compliance\n"
       << "components = " << o.components << "\n";
   }
   write_file_atomically(directory + "/summary.toml", s.str(), "--output");

@@ -23,7 +23,13 @@ Real evaluate_binary_design(const DesignGrid& grid, const std::vector<Real>& bin
   }
   SimpMaterial weak = material;
   weak.weak_ratio = 1e-9;
-  return evaluate_compliance(fine, rho, std::vector<char>(rho.size(), 1), load_case, weak).compliance;
+  if (material.model == mpm::MaterialKind::linear_elastic)
+    return evaluate_compliance(fine, rho, std::vector<char>(rho.size(), 1), load_case, weak).compliance;
+  // Neo-Hookean: void of 1e-9 E would invert under the solid's large strains (paper C
+  // Sec. 5), so only the solid points are simulated (the narrow band of the 0/1 design).
+  std::vector<char> solid(rho.size());
+  for (size_t q = 0; q < rho.size(); ++q) solid[q] = rho[q] > 0.5;
+  return evaluate_compliance(fine, rho, solid, load_case, material).compliance;
 }
 
 MethodOutcome run_method(const OptimizeScene& scene, const std::string& method,

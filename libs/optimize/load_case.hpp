@@ -35,6 +35,17 @@ struct LoadCase {
   std::vector<Load> loads;
 };
 
+// A plane of mirror symmetry the scene models by holding one displacement component on a
+// face of the design domain (paper C's half models: z = 0 of the 3D beam): the part is the
+// design mirrored through it.
+struct SymmetryPlane {
+  int axis = 0;               // its normal
+  bool far_face = false;      // x_axis = extent (else x_axis = 0)
+};
+
+// The supports that hold exactly one component on nodes of one domain face, normal to it.
+std::vector<SymmetryPlane> symmetry_planes(const DesignGrid& grid, const LoadCase& load_case);
+
 // Points of `grid` inside each load's box (one list per load).
 std::vector<std::vector<size_t>> loaded_points(const DesignGrid& grid, const LoadCase& load_case);
 

@@ -77,6 +77,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     // Where even the lowest threshold leaves no solvable band, this iteration fills the whole
     // domain with the weak material (E_min = 1e-9 E, the band's threshold reported as 0).
     bool band = settings.band.enabled;
+    bool linear_fallback = false;
     for (bool solved = false; !solved;) {
       bool joined = true;
       if (band) mask = narrow_band_mask(grid, rho, threshold, keep, anchors, &joined);
@@ -89,10 +90,19 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
       for (size_t q = 0; q < n; ++q) masked[q] = mask[q] ? rho[q] : 0;
       SimpMaterial m = material;
       if (!band) m.weak_ratio = 1e-9;
+      if (linear_fallback) m.model = mpm::MaterialKind::linear_elastic;
       try {
         c = evaluate_compliance(grid, masked, mask, load_case, m);
         solved = true;
       } catch (const NumericalError&) {
+        if (!linear_fallback && m.model != mpm::MaterialKind::linear_elastic) {
+          // No nonlinear equilibrium on this band (a mechanism the linear solve's diagonal
+          // shift holds, at a huge compliance that steers the design back): this iteration
+          // steps on the linear compliance.
+          linear_fallback = true;
+          ++result.linear_fallbacks;
+          continue;
+        }
         if (!band) throw;
         if (lowest) band = false, threshold = 0;
         else threshold = std::max(settings.band.start, threshold - 0.05);

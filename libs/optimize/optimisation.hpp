@@ -52,6 +52,9 @@ struct OptimisationResult {
   std::vector<Real> x;        // the final design variables
   std::vector<IterationRecord> history;
   bool converged = false;
+  // Neo-Hookean: iterations whose nonlinear equilibrium failed (a band with a mechanism,
+  // e.g. a cell holding one point) and that stepped on the linear compliance instead.
+  int linear_fallbacks = 0;
 };
 
 OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, Parameterisation& design,

@@ -43,6 +43,10 @@ void read_domain(TableReader t, OptimizeScene& s) {
 }
 
 void read_material(TableReader t, OptimizeScene& s) {
+  const std::string model = t.text("model", "linear_elastic");
+  if (model == "linear_elastic") s.material.model = mpm::MaterialKind::linear_elastic;
+  else if (model == "neo_hookean") s.material.model = mpm::MaterialKind::neo_hookean;
+  else t.fail("model", "expected linear_elastic or neo_hookean, got '" + model + "'");
   s.material.young_modulus = t.quantity("E", dimension::pressure);
   if (!(s.material.young_modulus > 0)) t.fail("E", "must be positive");
   s.material.poisson_ratio = t.number("nu");

@@ -31,10 +31,15 @@ RunChecks run_checks(const RunAnalysis& a) {
     const auto& ke = s.column("kinetic_energy", a.run.path);
     const auto& se = s.column("strain_energy", a.run.path);
     const auto& w = s.column("external_work", a.run.path);
-    // Plastic work (J2 runs' series column) is energy the work put in, not an imbalance.
-    const std::vector<double> none(w.size(), 0.0);
-    const auto& pd = s.has("plastic_dissipation") ? s.column("plastic_dissipation", a.run.path) : none;
-    const size_t n = std::min({u.size(), w.size(), pd.size()});
+    // Plastic work (J2 runs), the penalty springs' energy and friction's loss (penalty
+    // contact runs) are energy the work put in, not an imbalance; older series lack them.
+    std::vector<double> pd(w.size(), 0.0);
+    for (const char* name : {"plastic_dissipation", "contact_energy", "friction_dissipation"})
+      if (s.has(name)) {
+        const auto& column = s.column(name, a.run.path);
+        for (size_t i = 0; i < std::min(pd.size(), column.size()); ++i) pd[i] += column[i];
+      }
+    const size_t n = std::min(u.size(), w.size());
     if (n > 0 && w[n - 1] != 0) {
       c.energy_balance_error = std::abs(ke[n - 1] + se[n - 1] + pd[n - 1] - w[n - 1]) / std::abs(w[n - 1]);
       for (size_t i = 0; i < n; ++i)

@@ -98,7 +98,7 @@ void check_checkpoint(const Hdf5File& f, const mpm::Simulation& sim) {
   const int64_t step = read_checked_integers(f, g + "/solver/step", {1}, 0, std::numeric_limits<int64_t>::max())[0];
   for (const char* name : {"time", "dt", "stable_dt"}) scalar(f, g + "/solver/" + name, {0, big});
   for (const char* name : {"kinetic_energy", "strain_energy", "plastic_dissipation", "external_work", "max_speed",
-                           "constraint_work", "gravity_work", "rigid_energy", "energy_error", "carried_max_speed",
+                           "constraint_work", "gravity_work", "rigid_energy", "contact_energy", "friction_dissipation", "energy_error", "carried_max_speed",
                            "carried_max_wave_speed", "initial_energy", "initial_rigid_energy", "driven_rigid_work"})
     if (f.exists(g + "/solver/" + name)) scalar(f, g + "/solver/" + name);
   for (const char* name : {"/solver/body_displacement", "/solver/reaction", "/solver/initial_centre"})

@@ -1,6 +1,7 @@
 // From a scene to the solver's input: settings and body settings for mpm::Simulation.
-// The scene (libs/scene) is solver-agnostic data; this is the one place that maps its names
-// onto the solver's types.
+// The scene already holds the solver's own structs (scene.hpp); what is left here is what
+// the command line adds (threads), the density a rigid point body borrows, validation, and
+// the quantities the run derives from the scene (loading axis, end time).
 #pragma once
 #include <vector>
 
@@ -16,8 +17,6 @@ mpm::Settings solver_settings(const Scene& scene, int threads);
 // density of the first deformable body (its motion is prescribed; the density only sets
 // the mass it reports).
 std::vector<mpm::BodySettings> solver_bodies(const Scene& scene);
-// A scene material as the solver's parameters (the scene already holds the solver's model kind).
-mpm::MaterialParameters solver_material(const MaterialSpec& m);
 // The scene's [rigid_bodies], in scene order.
 std::vector<mpm::RigidBodySettings> solver_rigid_bodies(const Scene& scene);
 

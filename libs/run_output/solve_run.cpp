@@ -56,10 +56,10 @@ std::string domain_summary(const mpm::Simulation& sim, int64_t first_step) {
 SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& options)
     : scene_(std::move(scene)), provenance_(std::move(provenance)), options_(options) {
   PointSet points = load_scene_points(scene_, &provenance_);
-  if (std::abs(points.cell_size - scene_.cell_size) > 1e-9 * scene_.cell_size) {
+  if (std::abs(points.cell_size - scene_.settings.cell_size) > 1e-9 * scene_.settings.cell_size) {
     std::ostringstream note;
     note << "note: the points were made for a " << points.cell_size * 1e3 << " mm cell, the grid has "
-         << scene_.cell_size * 1e3 << " mm";
+         << scene_.settings.cell_size * 1e3 << " mm";
     points_summary_ += note.str() + "\n";
   }
   for (const std::string& warning : driven_body_warnings(scene_, points)) points_summary_ += warning + "\n";
@@ -73,6 +73,7 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
     points_summary_ += "body " + b.name + " (omitted): its points are not simulated\n";
   simulation_ = std::make_unique<mpm::Simulation>(points, solver_bodies(scene_),
                                                   solver_settings(scene_, options_.threads), scene_.where);
+  specimen_area_ = mpm::AverageStressForce::initial_cross_section(*simulation_, loading_axis(scene_));
   for (const auto& r : solver_rigid_bodies(scene_)) {
     simulation_->add_rigid_body(r);
     points_summary_ += "rigid body " + r.name + " (" + mpm::to_string(r.motion) + " " + mpm::to_string(r.shape) +
@@ -154,23 +155,23 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   for (const auto& f : scene_.point_files) log.line("points: " + f.path);
   std::istringstream summary(points_summary_);
   for (std::string l; std::getline(summary, l);) log.line(l);
-  log.line("grid: cell " + format_number("%g", scene_.cell_size) + " m, shape " + to_string(scene_.shape) +
-           ", scheme " + to_string(scene_.scheme) + ", flip " + format_number("%g", scene_.flip));
+  log.line("grid: cell " + format_number("%g", scene_.settings.cell_size) + " m, shape " + to_string(scene_.settings.shape_function) +
+           ", scheme " + to_string(scene_.settings.scheme) + ", flip " + format_number("%g", scene_.settings.flip_blend));
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();
-  const double dt0 = scene_.dt > 0 ? scene_.dt : stable;
-  log.line("time: " + (scene_.dt > 0 ? "fixed dt " + format_number("%g", scene_.dt) + " s"
-                                     : "cfl " + format_number("%g", scene_.cfl)) +
+  const double dt0 = scene_.settings.fixed_time_step > 0 ? scene_.settings.fixed_time_step : stable;
+  log.line("time: " + (scene_.settings.fixed_time_step > 0 ? "fixed dt " + format_number("%g", scene_.settings.fixed_time_step) + " s"
+                                     : "cfl " + format_number("%g", scene_.settings.cfl)) +
            ", stable dt " + format_number("%.4g", stable) + " s at the start, mass scaling " +
-           format_number("%g", scene_.mass_scaling));
+           format_number("%g", scene_.settings.mass_scaling));
   log.line("end: t = " + format_number("%g", end) + " s, about " + format_number("%.0f", std::ceil(end / dt0)) +
            " steps" + (scene_.max_steps ? ", at most " + std::to_string(scene_.max_steps) : ""));
   log.line("loading axis: (" + format_number("%g", axis.x()) + ", " + format_number("%g", axis.y()) + ", " +
            format_number("%g", axis.z()) + "), record area " + format_number("%g", sim.record_area()) + " m^2");
 
   // 2. The outputs, observing every step.
-  const SolverSeries series_row(sim, axis);
+  const SolverSeries series_row(sim, axis, specimen_area_);
   const auto columns = series_row.columns();
   std::vector<std::vector<double>> earlier_rows;
   if (options_.resume) {

@@ -61,6 +61,7 @@ class SolveRun {
   Provenance provenance_;
   SolveOptions options_;
   std::unique_ptr<mpm::Simulation> simulation_;
+  double specimen_area_ = 0;  // m², A0 of load_average, from the starting state (not a checkpoint's)
   std::string points_summary_;
 };
 

@@ -16,14 +16,19 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"load_record", "N", "record layer: -(mean vertical stress) x area (Paper A Sec. 5.1), compression positive"},
       {"kinetic_energy", "J", "1/2 sum m v^2 over deformable points"},
       {"strain_energy", "J", "sum V0 psi over deformable points"},
-      {"external_work", "J", "work of driven-body reactions and gravity on the deformable material since the start"},
+      {"external_work", "J", "work of the driven bodies (penalty bodies: f.V on their contact springs) and gravity since the start"},
       {"max_speed", "m/s", "largest particle speed of deformable points"},
       {"constraint_work", "J", "work of the fixed and driven point bodies' reactions (zero for a fixed base)"},
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
-       "kinetic + strain + plastic dissipation + flyer energy - initial - constraint_work - gravity_work - driven and "
-       "fixed rigid bodies' work"},
+       "kinetic + strain + plastic dissipation + flyer energy + contact energy + friction dissipation - initial - "
+       "constraint_work - gravity_work - driven rigid bodies' work"},
       {"plastic_dissipation", "J", "plastic work of the J2 points since the start, sum V0 x j2_plastic_work"},
+      {"contact_energy", "J", "energy held in the penalty bodies' contact springs, sum |f|^2 / (2 kappa)"},
+      {"friction_dissipation", "J", "energy dissipated by the penalty bodies' Coulomb friction since the start"},
+      {"load_average", "N",
+       "-A0 x current-volume average of the stress along the loading axis over the deformable material, A0 = "
+       "V0 / l0 (paper B Eq. 14, f_a), compression positive"},
   };
   if (with_flyer) {
     const std::vector<SeriesColumn> flyer = {
@@ -73,7 +78,8 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
                              displacement,     load_driven,      load_fixed,
                              0.0 - record_(sim),  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
                              d.external_work,  d.max_speed,      d.constraint_work,
-                             d.gravity_work,   d.energy_error,   d.plastic_dissipation};
+                             d.gravity_work,   d.energy_error,   d.plastic_dissipation,
+                             d.contact_energy, d.friction_dissipation, 0.0 - average_(sim)};
   if (flyer)
     row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
                            0.0 + Eigen::Vector3d(flyer->displacement).dot(axis), flyer->kinetic_energy,

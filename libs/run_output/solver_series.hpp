@@ -20,7 +20,9 @@ namespace latmpm {
 //   load_record = −A σ̄_zz of the record layer (Paper A Sec. 5.1, the GIMP runs' measure)
 //
 // Appended after those (older readers keep working): the energy accounting
-// constraint_work, gravity_work, energy_error (mpm/diagnostics.hpp); and, only when the
+// constraint_work, gravity_work, energy_error, plastic_dissipation, contact_energy,
+// friction_dissipation (mpm/diagnostics.hpp), load_average (paper B's f_a, Eq. 14:
+// −A0 σ̄_aa over the whole deformable material, mpm::AverageStressForce); and, only when the
 // scene has a free rigid body (the flyer; docs/post.md reads these names), load_flyer
 // (Σ over free rigid bodies of reaction · a: the contact force on the flyer, compression
 // positive), and of the first free body flyer_velocity and flyer_displacement (along a),
@@ -35,14 +37,16 @@ bool has_flyer(const mpm::Simulation& sim);
 // Simulation::boundary_reports()), the record layer (mpm::RecordLayerForce).
 class SolverSeries {
  public:
-  SolverSeries(const mpm::Simulation& sim, const Eigen::Vector3d& axis)
-      : axis_(axis), record_(sim), with_flyer_(has_flyer(sim)) {}
+  // specimen_area: A0 of load_average (mpm::AverageStressForce::initial_cross_section).
+  SolverSeries(const mpm::Simulation& sim, const Eigen::Vector3d& axis, double specimen_area)
+      : axis_(axis), record_(sim), average_(specimen_area, axis), with_flyer_(has_flyer(sim)) {}
   std::vector<SeriesColumn> columns() const { return solver_series_columns(with_flyer_); }
   std::vector<double> row(const mpm::Simulation& sim, const mpm::StepDiagnostics& d) const;
 
  private:
   Eigen::Vector3d axis_;
   mpm::RecordLayerForce record_;
+  mpm::AverageStressForce average_;
   bool with_flyer_;
 };
 

@@ -49,7 +49,7 @@ std::vector<std::string> driven_body_warnings(const Scene& scene, const PointSet
       material.emplace_back(points.position[i] - points.half_size[i], points.position[i] + points.half_size[i]);
   }
   if (material.empty()) return out;
-  const double h = scene.cell_size > 0 ? scene.cell_size : points.cell_size;
+  const double h = scene.settings.cell_size > 0 ? scene.settings.cell_size : points.cell_size;
   auto check_box = [&](const Eigen::AlignedBox3d& body, const Eigen::Vector3d& velocity, const std::string& where,
                        const std::string& name) {
     const double distance = travel(scene, velocity.norm());
@@ -73,20 +73,20 @@ std::vector<std::string> driven_body_warnings(const Scene& scene, const PointSet
     if (!box.isEmpty()) check_box(box, body.velocity, body.where, body.name);
   }
   for (const RigidBodySpec& r : scene.rigid_bodies) {
-    if (r.motion != RigidBodySpec::driven || r.velocity.norm() == 0) continue;
-    if (r.shape == RigidBodySpec::box) {
-      check_box(Eigen::AlignedBox3d(r.min, r.max), r.velocity, r.where, r.name);
+    if (r.motion != mpm::RigidMotion::driven || r.velocity.norm() == 0) continue;
+    if (r.shape == mpm::RigidShape::box) {
+      check_box(Eigen::AlignedBox3d(r.box_min, r.box_max), r.velocity, r.where, r.name);
       continue;
     }
     // Half-space {(x − p)·n ≤ 0} moved by the travel: some material must come within a cell.
-    const Eigen::Vector3d n = r.normal.normalized();
+    const Eigen::Vector3d n = r.plane_normal;
     const double advance = travel(scene, r.velocity.norm()) * r.velocity.normalized().dot(n);
     double gap = INFINITY;
     for (const auto& m : material) {
       // The sub-cell's corner deepest toward the body.
       Eigen::Vector3d corner;
       for (int a = 0; a < 3; ++a) corner[a] = n[a] > 0 ? m.min()[a] : m.max()[a];
-      gap = std::min(gap, (corner - r.point).dot(n));
+      gap = std::min(gap, (corner - r.plane_point).dot(n));
     }
     if (gap > advance + h) out.push_back(warning(r.where, r.name, travel(scene, r.velocity.norm()), gap));
   }

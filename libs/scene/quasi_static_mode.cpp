@@ -51,12 +51,12 @@ QuasiStaticChoice choose_quasi_static(const Scene& scene, double bound) {
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::driven) speed = std::max(speed, b.velocity.norm());
   for (const auto& r : scene.rigid_bodies)
-    if (r.motion == RigidBodySpec::driven) speed = std::max(speed, r.velocity.norm());
+    if (r.motion == mpm::RigidMotion::driven) speed = std::max(speed, r.velocity.norm());
   // The fastest wave of the unscaled deformable materials sets the Mach number.
   double c0 = 0;
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::deformable)
-      c0 = std::max(c0, std::sqrt(p_wave_modulus(b.material.youngs_modulus, b.material.poisson_ratio) /
+      c0 = std::max(c0, std::sqrt(p_wave_modulus(b.material.young_modulus, b.material.poisson_ratio) /
                                   b.material.density));
   QuasiStaticChoice c;
   c.mach_ratio = quasi_static_mach_ratio(bound);

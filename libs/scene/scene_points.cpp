@@ -124,8 +124,8 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
     }
   }
   // A record layer the scene names must exist: a misspelt tag would record a load of 0.
-  if (!scene.record_where.empty() && !scene.record_tag.empty()) {
-    const auto tag = all.tags.find(scene.record_tag);
+  if (!scene.record_where.empty() && !scene.settings.record_tag.empty()) {
+    const auto tag = all.tags.find(scene.settings.record_tag);
     bool any = false;
     if (tag != all.tags.end())
       for (size_t p = 0; p < all.size() && !any; ++p) any = tag->second[p];
@@ -133,7 +133,7 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       std::vector<std::string> tags;
       for (const auto& [name, mask] : all.tags) tags.push_back(name);
       throw InputError(scene.record_where, "output.record_tag",
-                       "no point carries the tag '" + scene.record_tag + "' (the point files' tags: " +
+                       "no point carries the tag '" + scene.settings.record_tag + "' (the point files' tags: " +
                            (tags.empty() ? std::string("none") : list(tags)) + ")");
     }
   }

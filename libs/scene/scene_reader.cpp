@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/quasi_static_mode.hpp"
+#include "scene/solver_readers.hpp"
 #include "scene/toml_table_reader.hpp"
 
 namespace latmpm {
@@ -17,25 +18,8 @@ using scene_toml::Origins;
 using scene_toml::TableReader;
 namespace fs = std::filesystem;
 
-template <typename Enum, size_t N>
-Enum enum_from(const std::string& name, const Enum (&values)[N]) {
-  for (Enum v : values)
-    if (name == to_string(v)) return v;
-  return values[0];
-}
-template <typename Enum, size_t N>
-std::vector<std::string> names_of(const Enum (&values)[N]) {
-  std::vector<std::string> names;
-  for (Enum v : values) names.emplace_back(to_string(v));
-  return names;
-}
-
-constexpr BodyRole all_roles[] = {BodyRole::deformable, BodyRole::fixed, BodyRole::driven};
 // A body of the point files that the scene leaves out (Scene::omitted_bodies).
 const std::string omitted_role = "omitted";
-const std::vector<std::string> rigid_motions = {"driven", "free", "fixed"};
-const std::vector<std::string> rigid_shapes = {"box", "half_space"};
-const std::vector<std::string> rigid_contacts = {"no_slip", "penalty"};
 
 void read_run(TableReader run, Scene& s) {
   TableReader end = run.table("end");
@@ -53,55 +37,29 @@ void read_run(TableReader run, Scene& s) {
   run.finish();
 }
 
-void read_grid(TableReader grid, Scene& s) {
-  s.cell_size = grid.quantity("cell", dimension::length);
-  if (!(s.cell_size > 0)) grid.fail("cell", "must be positive");
-  const mpm::Settings defaults;  // the defaults the scene shares with the solver
-  s.shape = mpm::parse_shape_function(grid.choice("shape", mpm::shape_function_names(), "ugimp"));
-  // Linear shapes keep an O(1/h) gradient at a node that a particle entering an empty cell
-  // has just given a tiny mass: USL then inverts that particle (measured: the tiny column at
-  // step 1905). MUSL's remapped nodal velocity stays bounded, so it is their default
-  // (docs/scene.md). DDMP hands such nodes on to their neighbours and runs USL, as the paper.
-  const bool remap = s.shape == mpm::ShapeFunctionKind::linear;
-  s.scheme = mpm::parse_update_scheme(grid.choice("scheme", mpm::update_scheme_names(), remap ? "musl" : "usl"));
-  s.flip = grid.number("flip", defaults.flip_blend);
-  if (s.flip < 0 || s.flip > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
-  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", defaults.ddmp_alpha_peak);
-  if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
-  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", defaults.ddmp_alpha_exponent);
-  if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
-  s.ddmp_on_grid = grid.boolean("ddmp_on_grid", defaults.ddmp_on_grid);
+// [grid], [time], [gravity] and [output]: the solver's settings (solver_readers.hpp), and
+// the scene's own keys of those tables.
+void read_settings_and_output(TableReader& root, Scene& s) {
+  TableReader grid = root.table("grid"), time = root.table_or_empty("time"),
+              gravity = root.table_or_empty("gravity"), out = root.table_or_empty("output");
+  read(grid, time, gravity, out, s.settings);
   grid.finish();
-}
-
-void read_time(TableReader time_table, Scene& s) {
-  TableReader* time = &time_table;
-  if (time->has("dt") && time->has("cfl"))
-    time->fail("dt", "give either dt (a fixed step) or cfl (a step from the wave speed), not both");
-  if (time->has("dt")) {
-    s.dt = time->quantity("dt", dimension::time);
-    if (!(s.dt > 0)) time->fail("dt", "must be positive");
-  } else {
-    s.cfl = time->number("cfl", mpm::default_cfl(s.shape));
-    if (!(s.cfl > 0) || s.cfl > 1) time->fail("cfl", "must lie in (0, 1]");
-  }
-  if (auto qs = time->optional_table("quasi_static")) {
-    if (time->has("mass_scaling"))
+  if (auto qs = time.optional_table("quasi_static")) {
+    if (time.has("mass_scaling"))
       qs->fail("load_error", "the quasi-static mode picks the mass scaling: give either it or mass_scaling");
     s.quasi_static_load_error = qs->number("load_error");
     if (!(s.quasi_static_load_error > 0 && s.quasi_static_load_error < 1))
       qs->fail("load_error", "must lie in (0, 1) (a fraction of the peak load)");
     qs->finish();
-  } else {
-    s.mass_scaling = time->number("mass_scaling", 1.0);
-    if (!(s.mass_scaling > 0)) time->fail("mass_scaling", "must be positive");
   }
-  time->finish();
-}
-
-void read_gravity(TableReader gravity, Scene& s) {
-  s.gravity = gravity.vector("g", dimension::acceleration, "0m/s^2");
+  time.finish();
   gravity.finish();
+  s.series_every = out.integer("series_every", 100);
+  if (s.series_every < 1) out.fail("series_every", "must be at least 1 (steps between rows)");
+  s.snapshot_every = out.integer("snapshot_every", 0);
+  if (s.snapshot_every < 0) out.fail("snapshot_every", "must be 0 (first and last only) or positive");
+  if (out.has("record_tag")) s.record_where = out.where("record_tag");
+  out.finish();
 }
 
 void read_points(std::vector<TableReader> files, const std::string& directory, Scene& s) {
@@ -120,36 +78,13 @@ void read_points(std::vector<TableReader> files, const std::string& directory, S
   if (s.point_files.empty()) throw InputError(s.where, "points", "the scene names no point file ([[points]] file = \"...\")");
 }
 
-MaterialSpec read_material(TableReader m) {
-  MaterialSpec spec;
-  spec.model = mpm::parse_material_kind(m.choice("model", mpm::material_kind_names(), "linear_elastic"));
-  spec.youngs_modulus = m.quantity("E", dimension::pressure);
-  if (!(spec.youngs_modulus > 0)) m.fail("E", "must be positive");
-  spec.poisson_ratio = m.number("nu");
-  if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5)) m.fail("nu", "must lie in (-1, 0.5)");
-  spec.density = m.quantity("density", dimension::density);
-  if (!(spec.density > 0)) m.fail("density", "must be positive");
-  if (spec.model == mpm::MaterialKind::j2) {  // paper B Eq. 10; the other models refuse these keys
-    spec.initial_yield = m.quantity("y0", dimension::pressure);
-    if (!(spec.initial_yield > 0)) m.fail("y0", "must be positive");
-    spec.saturation_yield = m.has("y_inf") ? m.quantity("y_inf", dimension::pressure) : spec.initial_yield;
-    if (!(spec.saturation_yield > 0)) m.fail("y_inf", "must be positive");
-    spec.saturation_rate = m.number("eta", 0);
-    if (!(spec.saturation_rate >= 0)) m.fail("eta", "must be zero or positive");
-    spec.linear_hardening = m.quantity("h", dimension::pressure, "0Pa");
-    if (!(spec.linear_hardening >= 0)) m.fail("h", "must be zero or positive");
-  }
-  m.finish();
-  return spec;
-}
-
 void read_bodies(TableReader bodies, Scene& s) {
   for (const std::string& name : bodies.keys()) {
     TableReader b = bodies.table(name);
     BodySpec body;
     body.name = name;
     body.where = b.where("role");
-    std::vector<std::string> roles = names_of(all_roles);
+    std::vector<std::string> roles = mpm::body_role_names();
     roles.push_back(omitted_role);
     const std::string role = b.choice("role", roles, "");
     if (role == omitted_role) {  // no other key: nothing of it is simulated
@@ -157,9 +92,11 @@ void read_bodies(TableReader bodies, Scene& s) {
       s.omitted_bodies.push_back(body);
       continue;
     }
-    body.role = enum_from(role, all_roles);
+    body.role = mpm::parse_body_role(role);
     if (body.role == BodyRole::deformable || b.has("material")) {
-      body.material = read_material(b.table("material"));
+      TableReader material = b.table("material");
+      read(material, body.material);
+      material.finish();
       body.has_material = true;
     }
     if (body.role == BodyRole::driven) {
@@ -196,71 +133,13 @@ void read_bodies(TableReader bodies, Scene& s) {
   std::stable_sort(s.bodies.begin(), s.bodies.end(), [](const BodySpec& a, const BodySpec& b) { return a.name < b.name; });
 }
 
-// contact = { model, friction, stiffness }: how a rigid body acts on the material.
-void read_rigid_contact(TableReader& b, RigidBodySpec& body) {
-  auto contact = b.optional_table("contact");
-  if (!contact) return;
-  body.contact = contact->choice("model", rigid_contacts, "no_slip") == "penalty" ? RigidBodySpec::penalty
-                                                                                          : RigidBodySpec::no_slip;
-  if (body.contact == RigidBodySpec::no_slip) {
-    for (const char* key : {"friction", "stiffness"})
-      if (contact->has(key)) contact->fail(key, "only penalty contact (model = \"penalty\") takes it");
-  } else {
-    // μ: a number ≥ 0 (0 slides freely) or "stick" (never slides).
-    if (contact->has_text("friction")) {
-      if (contact->text("friction") != "stick")
-        contact->fail("friction", "expected a number >= 0 or \"stick\"");
-      body.friction = std::numeric_limits<double>::infinity();
-    } else {
-      body.friction = contact->number("friction");
-      if (!(body.friction >= 0)) contact->fail("friction", "must be 0 (frictionless) or positive");
-    }
-    if (contact->has("stiffness")) {
-      body.contact_stiffness = contact->quantity("stiffness", dimension::stiffness);
-      if (!(body.contact_stiffness > 0)) contact->fail("stiffness", "must be positive (leave it out for the default)");
-    }
-  }
-  contact->finish();
-}
-
 void read_rigid_bodies(TableReader rigid, Scene& s) {
   for (const std::string& name : rigid.keys()) {
     TableReader b = rigid.table(name);
     RigidBodySpec body;
     body.name = name;
-    const std::string motion = b.choice("motion", rigid_motions, "");
     body.where = b.where("motion");
-    body.motion = motion == "free"    ? RigidBodySpec::free
-                  : motion == "fixed" ? RigidBodySpec::fixed
-                                      : RigidBodySpec::driven;
-    body.shape = b.choice("shape", rigid_shapes, "box") == "box" ? RigidBodySpec::box
-                                                                          : RigidBodySpec::half_space;
-    if (body.shape == RigidBodySpec::box) {
-      body.min = b.vector("min", dimension::length);
-      body.max = b.vector("max", dimension::length);
-      for (int a = 0; a < 3; ++a)
-        if (!(body.max[a] > body.min[a])) b.fail("max", "must exceed min along every axis (an empty box)");
-    } else {
-      body.point = b.vector("point", dimension::length);
-      body.normal = b.vector("normal", dimension::none);
-      if (!(body.normal.norm() > 0)) b.fail("normal", "must be a non-zero direction (out of the body)");
-    }
-    if (body.motion == RigidBodySpec::driven) {
-      body.velocity = b.vector("velocity", dimension::velocity);
-      if (body.velocity.norm() == 0) b.fail("velocity", "a driven body needs a non-zero velocity");
-      if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is driven)");
-      if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is driven)");
-    } else if (body.motion == RigidBodySpec::free) {
-      body.velocity = b.vector("velocity", dimension::velocity, "0m/s");
-      body.mass = b.quantity("mass", dimension::mass);
-      if (!(body.mass > 0)) b.fail("mass", "must be positive");
-      body.gravity = b.boolean("gravity", true);
-    } else {
-      if (b.has("velocity")) b.fail("velocity", "a fixed rigid body stays at rest: it takes no velocity");
-      if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is fixed)");
-      if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is fixed)");
-    }
-    read_rigid_contact(b, body);
+    read(b, body);
     b.finish();
     if (s.body(name)) b.fail("motion", "a point body of the same name exists; give the rigid body another name");
     s.rigid_bodies.push_back(body);
@@ -276,17 +155,6 @@ void read_checkpoint(TableReader checkpoint, Scene& s) {
   s.checkpoint.every_minutes = checkpoint.number("every_minutes", 10.0);
   if (!(s.checkpoint.every_minutes >= 0)) checkpoint.fail("every_minutes", "must be 0 (off) or positive");
   checkpoint.finish();
-}
-
-void read_output(TableReader output, Scene& s) {
-  TableReader* out = &output;
-  s.series_every = out->integer("series_every", 100);
-  if (s.series_every < 1) out->fail("series_every", "must be at least 1 (steps between rows)");
-  s.snapshot_every = out->integer("snapshot_every", 0);
-  if (s.snapshot_every < 0) out->fail("snapshot_every", "must be 0 (first and last only) or positive");
-  if (out->has("record_tag")) s.record_where = out->where("record_tag");
-  s.record_tag = out->text("record_tag", "record");
-  out->finish();
 }
 
 void read_solver(TableReader solver, Scene& s) {
@@ -313,7 +181,7 @@ void read_solver(TableReader solver, Scene& s) {
 void check_consistency(const Scene& s) {
   int driven = 0;
   for (const auto& b : s.bodies) driven += b.role == BodyRole::driven;
-  for (const auto& b : s.rigid_bodies) driven += b.motion == RigidBodySpec::driven;
+  for (const auto& b : s.rigid_bodies) driven += b.motion == mpm::RigidMotion::driven;
   if (s.end.kind == EndCondition::plate_displacement && driven != 1)
     throw InputError(s.end.where, "run.end.plate_displacement",
                      "needs exactly one driven body, the scene has " + std::to_string(driven));
@@ -327,21 +195,12 @@ std::vector<std::string> scene_choice_names(const std::string& choice) {
   if (choice == "materials") return mpm::material_kind_names();
   if (choice != "boundaries") return {};
   std::vector<std::string> names;
-  for (BodyRole role : all_roles)
-    if (role != BodyRole::deformable) names.push_back(std::string("bodies.role=") + to_string(role));
-  for (const auto& m : rigid_motions) names.push_back("rigid_bodies.motion=" + m);
-  for (const auto& m : rigid_shapes) names.push_back("rigid_bodies.shape=" + m);
-  for (const auto& m : rigid_contacts) names.push_back("rigid_bodies.contact.model=" + m);
+  for (const auto& role : mpm::body_role_names())
+    if (role != mpm::to_string(BodyRole::deformable)) names.push_back("bodies.role=" + role);
+  for (const auto& m : mpm::rigid_motion_names()) names.push_back("rigid_bodies.motion=" + m);
+  for (const auto& m : mpm::rigid_shape_names()) names.push_back("rigid_bodies.shape=" + m);
+  for (const auto& m : mpm::rigid_coupling_names()) names.push_back("rigid_bodies.contact.model=" + m);
   return names;
-}
-
-const char* to_string(BodyRole role) {
-  switch (role) {
-    case BodyRole::deformable: return "deformable";
-    case BodyRole::fixed: return "fixed";
-    case BodyRole::driven: return "driven";
-  }
-  return "?";
 }
 
 const BodySpec* Scene::body(const std::string& name) const {
@@ -366,21 +225,18 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::s
   s.source = s.where = name;
   TableReader root(document, "", origins);
   read_run(root.table("run"), s);
-  read_grid(root.table("grid"), s);
-  read_time(root.table_or_empty("time"), s);
-  read_gravity(root.table_or_empty("gravity"), s);
+  read_settings_and_output(root, s);
   read_points(root.tables("points"), directory, s);
   read_bodies(root.table("bodies"), s);
   if (s.bodies.empty()) root.fail("bodies", "the scene describes no body ([bodies.<name>] tables)");
   if (root.has("rigid_bodies")) read_rigid_bodies(root.table("rigid_bodies"), s);
-  read_output(root.table_or_empty("output"), s);
   read_checkpoint(root.table_or_empty("checkpoint"), s);
   read_solver(root.table_or_empty("solver"), s);
   root.finish();
   check_consistency(s);
   if (s.quasi_static_load_error > 0) {
     const QuasiStaticChoice pick = choose_quasi_static(s, s.quasi_static_load_error);
-    s.mass_scaling = pick.mass_scaling;
+    s.settings.mass_scaling = pick.mass_scaling;
     s.quasi_static_note = pick.reason;
   }
 

@@ -15,10 +15,10 @@ namespace {
 // a model with history (J2) has no potential to minimise, so it is refused, not replaced.
 mpm::MaterialParameters static_material(const BodySpec& body) {
   const std::string field = "bodies." + body.name + ".material";
-  const mpm::MaterialParameters p = solver_material(body.material);
+  const mpm::MaterialParameters& p = body.material;
   if (p.kind != mpm::MaterialKind::linear_elastic && p.kind != mpm::MaterialKind::neo_hookean)
     throw InputError(body.where, field + ".model",
-                     std::string("the static solver has no energy for \"") + to_string(body.material.model) +
+                     std::string("the static solver has no energy for \"") + to_string(p.kind) +
                          "\" (linear_elastic or neo_hookean)");
   return p;
 }
@@ -26,7 +26,7 @@ mpm::MaterialParameters static_material(const BodySpec& body) {
 
 StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points) {
   for (const RigidBodySpec& r : scene.rigid_bodies)
-    if (r.motion == RigidBodySpec::free)
+    if (r.motion == mpm::RigidMotion::free)
       throw InputError(r.where, "rigid_bodies." + r.name + ".motion",
                        "the static solver has no free bodies (no inertia): use driven or fixed");
   StaticSceneProblem out;
@@ -41,7 +41,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   const BodySpec* driven = nullptr;
   const RigidBodySpec* driven_rigid = nullptr;
   for (const RigidBodySpec& r : scene.rigid_bodies)
-    if (r.motion == RigidBodySpec::driven) driven_rigid = &r;
+    if (r.motion == mpm::RigidMotion::driven) driven_rigid = &r;
   for (size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodySpec& body = scene.bodies[b];
     if (body.role == BodyRole::deformable) {
@@ -63,8 +63,8 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
     volume.push_back(points.volume[p]);
     material.push_back(uint16_t(e));
   }
-  const mpm::ShapeFunctionKind shape = scene.shape;
-  out.problem = std::make_unique<statics::StaticProblem>(statics::build_narrow_band(X, half, scene.cell_size, shape),
+  const double h = scene.settings.cell_size;
+  out.problem = std::make_unique<statics::StaticProblem>(statics::build_narrow_band(X, half, h, scene.settings.shape_function),
                                                          std::move(volume), std::move(material), std::move(energies));
 
   // Supports and platen: the band nodes their points reach.
@@ -87,20 +87,20 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   // A half-space short of the material is first moved into contact (the explicit run's
   // travel before its first contact): its plane then passes through the nearest band nodes.
   for (const RigidBodySpec& r : scene.rigid_bodies) {
-    auto& nodes = r.motion == RigidBodySpec::driven ? out.loading.platen_nodes : out.loading.support_nodes;
+    auto& nodes = r.motion == mpm::RigidMotion::driven ? out.loading.platen_nodes : out.loading.support_nodes;
     double gap = 0;
-    if (r.shape == RigidBodySpec::half_space) {
+    if (r.shape == mpm::RigidShape::half_space) {
       gap = std::numeric_limits<double>::infinity();
       for (size_t n = 0; n < band.node_count(); ++n)
-        gap = std::min(gap, (band.node_position(n) - r.point).dot(r.normal.normalized()));
+        gap = std::min(gap, (band.node_position(n) - r.plane_point).dot(r.plane_normal));
       gap = std::max(gap, 0.0);
       out.contact_gap = std::max(out.contact_gap, gap);
     }
     for (size_t n = 0; n < band.node_count(); ++n) {
       const Eigen::Vector3d x = band.node_position(n);
-      const bool inside = r.shape == RigidBodySpec::half_space
-                              ? (x - r.point).dot(r.normal.normalized()) <= gap + 1e-9 * scene.cell_size
-                              : ((x - r.min).array() >= 0).all() && ((r.max - x).array() >= 0).all();
+      const bool inside = r.shape == mpm::RigidShape::half_space
+                              ? (x - r.plane_point).dot(r.plane_normal) <= gap + 1e-9 * h
+                              : ((x - r.box_min).array() >= 0).all() && ((r.box_max - x).array() >= 0).all();
       if (inside) nodes.push_back(n);
     }
     std::sort(nodes.begin(), nodes.end());

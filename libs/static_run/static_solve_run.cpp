@@ -101,8 +101,8 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   log.line("points: " + std::to_string(problem.point_count()) + " material, band nodes " +
            std::to_string(problem.band().node_count()) + " (" + std::to_string(problem.dof_count()) +
            " unknowns), support nodes " + std::to_string(sp.loading.support_nodes.size()) + ", platen nodes " +
-           std::to_string(sp.loading.platen_nodes.size()) + ", shape " + to_string(scene.shape) + ", cell " +
-           format_number("%g", scene.cell_size) + " m");
+           std::to_string(sp.loading.platen_nodes.size()) + ", shape " + to_string(scene.settings.shape_function) + ", cell " +
+           format_number("%g", scene.settings.cell_size) + " m");
   log.line("loading: travel " + format_number("%g", sp.loading.travel) + " m in " + std::to_string(sp.loading.increments) +
            " increments" +
            (sp.contact_gap > 0 ? ", from contact (the rigid platen first closed a gap of " +
@@ -113,7 +113,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::driven) speed = b.velocity.norm();
   for (const auto& r : scene.rigid_bodies)
-    if (r.motion == RigidBodySpec::driven) speed = r.velocity.norm();
+    if (r.motion == mpm::RigidMotion::driven) speed = r.velocity.norm();
   SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", static_columns, provenance);
   SnapshotWriter snapshots(run_dir, provenance);
   statics::Vector zero = statics::Vector::Zero(Eigen::Index(problem.dof_count()));

@@ -1,9 +1,11 @@
 // Paper B's SHPB specimen at QUICK size (docs/paper-b.md): the B2 hexahedral cylinder
 // (d0 = l0 = 4 mm, 384 CPDI1 domains), J2 42CrMo4, between two penalty planes with Coulomb
 // friction μ = 0.1, the incident one driven at 10.6476 m/s, on the 0.4 mm grid G4, paper B's
-// Δt = 5 ns (as cfl), 10 µs. References: the energy balance — the driven plane's work
-// ∫ f_i V dt against kinetic + elastic (Eq. 12) + plastic work (Σ V0 Σ Δα y) — and the
-// balance of the two planes' forces; no point passes either plane.
+// Δt = 5 ns (as cfl), 10 µs. References: the contact's own energy balance — the driven
+// plane's work ∫ f_i V dt = the springs' work on the points Σ f_p·Δx_p + the springs' energy
+// + friction's loss, the exact bookkeeping of rigid_contact.hpp —, the balance of the two
+// planes' forces, the virtual-work identity that ties paper B's f_a (Eq. 14) to the contact
+// forces, and no point passing either plane.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -11,6 +13,7 @@
 #include "hexmesh/hex_mesh.hpp"
 #include "hexmesh/hex_points.hpp"
 #include "mpm/j2_plasticity.hpp"
+#include "mpm/observers.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
 
@@ -48,24 +51,60 @@ TEST_CASE("The QUICK SHPB specimen in CPDI1 and J2 closes its energy balance wit
   Simulation sim(points, {deformable("specimen", m)}, s);
   sim.add_rigid_body(plane("incident", length, -1, -speed));
   sim.add_rigid_body(plane("transmitter", 0, 1, 0));
-  Real z_min = 1, z_max = -1, plane_work = 0, f_i_late = 0, f_t_late = 0;
+  const AverageStressForce f_a(AverageStressForce::initial_cross_section(sim, Vec3::UnitZ()), Vec3::UnitZ());
+  std::vector<Vec3> x_before(points.size());  // by point id: the solver re-sorts its particles
+  auto remember = [&](const Particles& ps) {
+    for (size_t p = 0; p < ps.size(); ++p) x_before[ps.id[p]] = ps.position[p];
+  };
+  remember(sim.particles());
+  Real z_min = 1, z_max = -1, plane_work = 0, spring_work = 0, f_i_late = 0, f_t_late = 0, f_a_late = 0,
+       virtual_late = 0;
   sim.add_observer([&](const Simulation& sm, const StepDiagnostics& d) {
+    const Particles& ps = sm.particles();
+    const auto& force = sm.contact_forces();  // at the step's start, x^n
     const Real f_i = -d.rigid[0].reaction[2], f_t = d.rigid[1].reaction[2];
     plane_work += f_i * speed * d.dt;
-    if (d.time > 8e-6) f_i_late += f_i * d.dt, f_t_late += f_t * d.dt;  // means over the last 2 µs
+    // Virtual work with the homogeneous field v = (0, 0, z): Σ v_p σ_zz = Σ f_z z_p (+ inertia).
+    Real moment = 0, current_volume = 0;
+    for (size_t p = 0; p < ps.size(); ++p) {
+      spring_work += force[p].dot(ps.position[p] - x_before[ps.id[p]]);
+      moment += force[p][2] * x_before[ps.id[p]][2];
+      current_volume += ps.deformation[p].determinant() * ps.volume0[p];
+    }
+    remember(ps);
+    if (d.time > 8e-6) {  // means over the last 2 µs
+      f_i_late += f_i * d.dt, f_t_late += f_t * d.dt;
+      f_a_late -= f_a(sm) * d.dt;
+      virtual_late -= f_a.area() * moment / current_volume * d.dt;
+    }
     const Real top = length - speed * d.time;
-    for (const Vec3& x : sm.particles().position) z_min = std::min(z_min, x[2]), z_max = std::max(z_max, x[2] - top);
+    for (const Vec3& x : ps.position) z_min = std::min(z_min, x[2]), z_max = std::max(z_max, x[2] - top);
   });
   sim.run_until(10e-6);
   const StepDiagnostics& d = sim.last_diagnostics();
-  const Real stored = d.kinetic_energy + d.strain_energy + d.plastic_dissipation;
-  INFO("plane work " << plane_work << " J; kinetic " << d.kinetic_energy << " J, elastic " << d.strain_energy
-                     << " J, plastic " << d.plastic_dissipation << " J; mean f_i " << f_i_late / 2e-6 << " N, f_t "
-                     << f_t_late / 2e-6 << " N");
+  const Real stored = d.kinetic_energy + d.strain_energy + d.plastic_dissipation + d.contact_energy + d.friction_dissipation;
+  INFO("plane work " << plane_work << " J (solver " << d.external_work << " J), on the points " << spring_work
+                     << " J; kinetic " << d.kinetic_energy << " J, elastic " << d.strain_energy << " J, plastic "
+                     << d.plastic_dissipation << " J, springs " << d.contact_energy << " J, friction "
+                     << d.friction_dissipation << " J, energy error " << d.energy_error << " J; mean f_i "
+                     << f_i_late / 2e-6 << " N, f_t " << f_t_late / 2e-6 << " N, f_a " << f_a_late / 2e-6
+                     << " N, virtual-work f_a " << virtual_late / 2e-6 << " N");
   CHECK(d.plastic_dissipation > 0.8 * plane_work);  // a metal past yield: most work is plastic
-  // Friction (μ = 0.1 at 2.7 % strain) and the contact springs' stretch are outside the sum.
-  CHECK(std::abs(stored - plane_work) < 0.02 * plane_work);
+  // The planes' work is their own power f·V (the fixed one does none) ...
+  CHECK(std::abs(d.external_work - plane_work) < 1e-9 * plane_work);
+  // ... which the springs pass on to the points, less what they hold and friction's loss.
+  CHECK(d.friction_dissipation > 0);
+  CHECK(std::abs(plane_work - spring_work - d.contact_energy - d.friction_dissipation) < 0.002 * plane_work);
+  // The whole balance, work in = kinetic + elastic + plastic + springs + friction, is off by
+  // the solver's own error in the material (docs/paper-b.md, "Energy"): +2.7 % here, first
+  // order in the step (+6.9 % at 10 ns, +10.9 % at 20 ns). Kept as measured, not asserted.
+  CHECK(d.energy_error == Approx(stored - plane_work).margin(1e-9));
+  CHECK(d.energy_error > 0);
   CHECK(std::abs(f_i_late - f_t_late) < 0.01 * f_i_late);  // the specimen is in equilibrium
+  // f_a is the contact forces' moment over the points' span, not f_i: contact acts at the
+  // material points, the end layers' centres (paper B Sec. 3.4).
+  CHECK(f_a_late == Approx(virtual_late).epsilon(0.02));
+  CHECK(f_a_late < 0.9 * f_i_late);
   // Paper B handles contact at the material points: none passes a plane.
   CHECK(z_min > 0);
   CHECK(z_max < 0);

@@ -10,7 +10,7 @@ namespace {
 // A 4 mm cube of deformable points (1 mm cells, 1 ppc) on z ∈ [0, 4 mm] and a 1 mm thick
 // driven plate of points whose lowest face is at `plate_bottom` (m).
 void specimen(Scene& scene, PointSet& points, double plate_bottom) {
-  scene.cell_size = points.cell_size = 1e-3;
+  scene.settings.cell_size = points.cell_size = 1e-3;
   points.ppc = 1;
   points.body_names = {"part", "top_plate"};
   scene.bodies.resize(2);
@@ -61,15 +61,15 @@ TEST_CASE("A driven rigid half-space is checked along its normal", "[scene]") {
   specimen(scene, points, 4e-3);
   scene.bodies[1].role = BodyRole::fixed;  // the plate of points stays; a rigid plane drives
   RigidBodySpec plane;
-  plane.shape = RigidBodySpec::half_space;
+  plane.shape = mpm::RigidShape::half_space;
   plane.name = "platen";
   plane.where = "scene.toml:40";
-  plane.normal = {0, 0, -1};  // out of the body, toward the part below
+  plane.plane_normal = {0, 0, -1};  // out of the body, toward the part below
   plane.velocity = {0, 0, -0.1};
-  plane.point = {0, 0, 5e-3};  // 1 mm above the part: reached
+  plane.plane_point = {0, 0, 5e-3};  // 1 mm above the part: reached
   scene.rigid_bodies.push_back(plane);
   CHECK(driven_body_warnings(scene, points).empty());
-  scene.rigid_bodies[0].point = {0, 0, 10e-3};  // 6 mm above, 2 mm travel
+  scene.rigid_bodies[0].plane_point = {0, 0, 10e-3};  // 6 mm above, 2 mm travel
   const auto warnings = driven_body_warnings(scene, points);
   REQUIRE(warnings.size() == 1);
   CHECK_THAT(warnings[0], Catch::Contains("'platen'"));

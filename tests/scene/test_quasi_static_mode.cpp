@@ -38,7 +38,7 @@ TEST_CASE("The quasi-static mode picks paper A's mass scaling for the error meas
   const double c = std::sqrt(10e6 * 0.6 / (1.4 * 0.2) / (6 * 1050.0));
   CHECK(paper_a_mach() == Approx(0.1 / c));
   const Scene s = parse(scene_text("quasi_static = { load_error = " + std::to_string(quasi_static_load_error(1.0)) + " }"));
-  CHECK(s.mass_scaling == Approx(6).epsilon(1e-4));
+  CHECK(s.settings.mass_scaling == Approx(6).epsilon(1e-4));
   CHECK_THAT(s.quasi_static_note, Catch::Contains("picked mass scaling 6"));
 }
 
@@ -46,8 +46,8 @@ TEST_CASE("The quasi-static mode keeps the Mach number: twice the plate speed, a
   const std::string mode = "quasi_static = { load_error = 0.05 }";
   const Scene slow = parse(scene_text(mode)), fast = parse(scene_text(mode, "-200mm/s"));
   // M = v sqrt(s) / c0 is what the error depends on (t -> a t, rho -> a^2 rho leaves the run unchanged).
-  CHECK(fast.mass_scaling == Approx(slow.mass_scaling / 4));
-  CHECK(slow.mass_scaling > 6);  // 5 % allows more than paper A's 2.8 %
+  CHECK(fast.settings.mass_scaling == Approx(slow.settings.mass_scaling / 4));
+  CHECK(slow.settings.mass_scaling > 6);  // 5 % allows more than paper A's 2.8 %
 }
 
 TEST_CASE("A looser bound never picks a slower run, and the pick stays within the measured range", "[scene][quasi_static]") {

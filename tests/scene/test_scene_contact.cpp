@@ -58,16 +58,16 @@ Scene parse(const std::string& text) { return parse_scene(text, "scene.toml", sc
 TEST_CASE("A rigid body couples without slip unless its contact is penalty", "[scene][contact]") {
   const Scene plain = parse(scene_with(""));
   REQUIRE(plain.rigid_bodies.size() == 1);
-  CHECK(plain.rigid_bodies[0].contact == RigidBodySpec::no_slip);
+  CHECK(plain.rigid_bodies[0].coupling == mpm::RigidCoupling::no_slip);
 
   const Scene penalty = parse(scene_with("contact = { model = \"penalty\", friction = 0.1, stiffness = \"2kN/m\" }"));
   const RigidBodySpec& b = penalty.rigid_bodies.at(0);
-  CHECK(b.contact == RigidBodySpec::penalty);
+  CHECK(b.coupling == mpm::RigidCoupling::penalty);
   CHECK(b.friction == 0.1);
   CHECK(b.contact_stiffness == Approx(2000));
   // The resolved scene reads back to the same contact.
   const Scene again = parse_scene(penalty.resolved_toml, "resolved.toml", "/nonexistent");
-  CHECK(again.rigid_bodies.at(0).contact == RigidBodySpec::penalty);
+  CHECK(again.rigid_bodies.at(0).coupling == mpm::RigidCoupling::penalty);
   CHECK(again.rigid_bodies.at(0).contact_stiffness == b.contact_stiffness);
 
   // Without a stiffness the solver chooses it (0 here); "stick" never slides.
@@ -109,12 +109,12 @@ TEST_CASE("Contact errors name the file, the line and the key", "[scene][contact
 TEST_CASE("A fixed rigid body is a base at rest that is not a driven body", "[scene][contact]") {
   const Scene scene = parse(fixed_base_with(""));
   const RigidBodySpec& base = scene.rigid_bodies.at(0);
-  CHECK(base.motion == RigidBodySpec::fixed);
+  CHECK(base.motion == mpm::RigidMotion::fixed);
   CHECK(base.velocity == Eigen::Vector3d::Zero());
-  CHECK(base.contact == RigidBodySpec::penalty);
+  CHECK(base.coupling == mpm::RigidCoupling::penalty);
   CHECK(base.friction == 0.3);
   const Scene again = parse_scene(scene.resolved_toml, "resolved.toml", "/nonexistent");
-  CHECK(again.rigid_bodies.at(0).motion == RigidBodySpec::fixed);
+  CHECK(again.rigid_bodies.at(0).motion == mpm::RigidMotion::fixed);
 
   // It does not count as the one driven body run.end.plate_displacement needs.
   try {

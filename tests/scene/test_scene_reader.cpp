@@ -61,15 +61,15 @@ TEST_CASE("A scene's quantities arrive in SI units", "[scene]") {
   Scene s = parse(base_scene);
   CHECK(s.end.kind == EndCondition::plate_displacement);
   CHECK(s.end.value == Approx(2e-3));
-  CHECK(s.cell_size == Approx(4e-4));
-  CHECK(s.shape == mpm::ShapeFunctionKind::linear);
-  CHECK(s.cfl == 0.25);
-  CHECK(s.dt == 0);
-  CHECK(s.mass_scaling == 6);
+  CHECK(s.settings.cell_size == Approx(4e-4));
+  CHECK(s.settings.shape_function == mpm::ShapeFunctionKind::linear);
+  CHECK(s.settings.cfl == 0.25);
+  CHECK(s.settings.fixed_time_step == 0);
+  CHECK(s.settings.mass_scaling == 6);
   REQUIRE(s.bodies.size() == 2);
   CHECK(s.bodies[0].name == "column");  // document order, not alphabetical
   CHECK(s.bodies[0].role == BodyRole::deformable);
-  CHECK(s.bodies[0].material.youngs_modulus == Approx(1e7));
+  CHECK(s.bodies[0].material.young_modulus == Approx(1e7));
   CHECK(s.bodies[0].material.poisson_ratio == 0.4);
   CHECK(s.bodies[0].material.density == Approx(1050));
   CHECK(s.bodies[1].role == BodyRole::driven);
@@ -83,13 +83,13 @@ TEST_CASE("Defaults are documented in the resolved scene, which reads back to th
   Scene s = parse(base_scene);
   // The base scene's linear shapes default to MUSL (USL inverts particles entering empty
   // cells with them, docs/scene.md); GIMP and DDMP (small-mass nodes handed on) to USL.
-  CHECK(s.scheme == mpm::UpdateScheme::musl);
-  CHECK(parse(base_scene, {"grid.shape=ugimp"}).scheme == mpm::UpdateScheme::usl);
-  CHECK(parse(base_scene, {"grid.shape=ddmp"}).scheme == mpm::UpdateScheme::usl);
-  CHECK(s.flip == 0.99);
-  CHECK(s.gravity.isZero());
+  CHECK(s.settings.scheme == mpm::UpdateScheme::musl);
+  CHECK(parse(base_scene, {"grid.shape=ugimp"}).settings.scheme == mpm::UpdateScheme::usl);
+  CHECK(parse(base_scene, {"grid.shape=ddmp"}).settings.scheme == mpm::UpdateScheme::usl);
+  CHECK(s.settings.flip_blend == 0.99);
+  CHECK(s.settings.gravity.isZero());
   CHECK(s.snapshot_every == 0);
-  CHECK(s.record_tag == "record");
+  CHECK(s.settings.record_tag == "record");
   CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'musl'") || Catch::Contains("scheme = \"musl\""));
   CHECK_THAT(s.resolved_toml, Catch::Contains("record_tag"));
 
@@ -97,9 +97,9 @@ TEST_CASE("Defaults are documented in the resolved scene, which reads back to th
   Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
   CHECK(again.resolved_toml == s.resolved_toml);
   CHECK(again.point_files.at(0).path == s.point_files.at(0).path);
-  CHECK(again.cell_size == s.cell_size);
+  CHECK(again.settings.cell_size == s.settings.cell_size);
   CHECK(again.bodies[1].velocity == s.bodies[1].velocity);
-  CHECK(again.mass_scaling == s.mass_scaling);
+  CHECK(again.settings.mass_scaling == s.settings.mass_scaling);
 }
 
 TEST_CASE("Scene errors name the file, the line and the key", "[scene]") {
@@ -171,9 +171,9 @@ TEST_CASE("Command-line overrides reach any field, the value read as TOML or els
   Scene s = parse(base_scene, {"grid.cell=0.2mm", "time.mass_scaling=1", "grid.scheme=musl",
                                "bodies.top.velocity=[\"0m/s\",\"0m/s\",\"-0.05m/s\"]",
                                "run.end={ time = \"3ms\" }", "output.snapshot_every=5"});
-  CHECK(s.cell_size == Approx(2e-4));
-  CHECK(s.mass_scaling == 1);
-  CHECK(s.scheme == mpm::UpdateScheme::musl);
+  CHECK(s.settings.cell_size == Approx(2e-4));
+  CHECK(s.settings.mass_scaling == 1);
+  CHECK(s.settings.scheme == mpm::UpdateScheme::musl);
   CHECK(s.bodies[1].velocity.z() == Approx(-0.05));
   CHECK(s.end.kind == EndCondition::time);
   CHECK(s.end.value == Approx(3e-3));
@@ -226,15 +226,15 @@ TEST_CASE("Relative point files resolve against the scene file's directory", "[s
 TEST_CASE("A j2 material reads paper B's hardening law with defaults, and other models refuse its keys", "[scene]") {
   const Scene full = parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
                                          "y0 = \"668MPa\", y_inf = \"887MPa\", eta = 51.6, h = \"285MPa\" }"));
-  const MaterialSpec& m = full.body("column")->material;
-  CHECK(m.model == mpm::MaterialKind::j2);
+  const mpm::MaterialParameters& m = full.body("column")->material;
+  CHECK(m.kind == mpm::MaterialKind::j2);
   CHECK(m.initial_yield == Approx(668e6));
   CHECK(m.saturation_yield == Approx(887e6));
   CHECK(m.saturation_rate == Approx(51.6));
   CHECK(m.linear_hardening == Approx(285e6));
   const Scene plain = parse(with_line(13, "material = { model = \"j2\", E = \"190GPa\", nu = 0.3, density = \"7850kg/m^3\", "
                                           "y0 = \"668MPa\" }"));
-  const MaterialSpec& p = plain.body("column")->material;
+  const mpm::MaterialParameters& p = plain.body("column")->material;
   CHECK(p.saturation_yield == Approx(668e6));  // perfect plasticity unless told
   CHECK(p.saturation_rate == 0);
   CHECK(p.linear_hardening == 0);
@@ -269,12 +269,12 @@ TEST_CASE("Without cfl or dt a scene runs at its shape function's measured cfl, 
   for (const char* shape : {"linear", "ugimp", "ddmp"}) {
     CAPTURE(shape);
     const Scene s = parse(with_line(7, ""), {std::string("grid.shape=") + shape});
-    CHECK(s.cfl == default_cfl(s.shape));
-    CHECK(s.cfl > 0);
-    CHECK(s.cfl <= 1);
-    CHECK(parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent").cfl == s.cfl);
+    CHECK(s.settings.cfl == default_cfl(s.settings.shape_function));
+    CHECK(s.settings.cfl > 0);
+    CHECK(s.settings.cfl <= 1);
+    CHECK(parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent").settings.cfl == s.settings.cfl);
   }
   // uGIMP's measured limit is above the old fixed 0.3 (docs/tradeoff.md, "Time step").
   CHECK(default_cfl(mpm::ShapeFunctionKind::ugimp) > 0.3);
-  CHECK(parse(base_scene).cfl == 0.25);  // a given cfl wins
+  CHECK(parse(base_scene).settings.cfl == 0.25);  // a given cfl wins
 }

@@ -38,7 +38,8 @@ optimisation resolution and on a grid refined twice), and per method <method>-hi
 <method>-design.csv (x, y, z in mm, density, binary per quadrature point) and
 <method>-design.gp (gnuplot draws <method>-design.png), and the binary design as
 <method>-points.h5 (a point-set file for latmpm-solve: solid quadrature points, a planar
-design extruded through its thickness) and <method>-part.stl (closed surface, mm: OpenVDB
+design extruded through its thickness, a half model mirrored through its symmetry plane
+into the whole part) and <method>-part.stl (closed surface, mm: OpenVDB
 level set of the solid voxels, meshed by volumeToMesh).
 
 Exit status: 0 done, 1 usage, 2 bad scene (FILE:LINE: key: problem; nothing written),
@@ -92,7 +93,8 @@ int optimize_main(int argc, char** argv) {
     outcomes.push_back(run_method(scene, method, progress));
     const MethodOutcome& o = outcomes.back();
     write_method_files(dir, scene, o, lines);
-    const ExportReport exported = export_design(scene.grid, o.binary, dir + "/" + method + "-points.h5",
+    const ExportReport exported = export_design(scene.grid, o.binary, symmetry_planes(scene.grid, scene.load_case),
+                                                dir + "/" + method + "-points.h5",
                                                 dir + "/" + method + "-part.stl", provenance);
     std::printf("%s: %s %zu iterations (%s), %.3f s/iteration, volume %.2f %%, compliance %.6g J, refined %.6g J, "
                 "%zu corrections; %zu points, %zu triangles (%s, enclosed %.4g mm^3, points %.4g mm^3)\n",

@@ -1,0 +1,124 @@
+#include "scene/solver_readers.hpp"
+
+#include <limits>
+#include <string>
+
+namespace latmpm::scene_toml {
+
+void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReader& output,
+          mpm::Settings& s) {
+  s.cell_size = grid.quantity("cell", dimension::length);
+  if (!(s.cell_size > 0)) grid.fail("cell", "must be positive");
+  s.shape_function = mpm::parse_shape_function(
+      grid.choice("shape", mpm::shape_function_names(), mpm::to_string(s.shape_function)));
+  s.scheme = mpm::parse_update_scheme(
+      grid.choice("scheme", mpm::update_scheme_names(), mpm::to_string(mpm::default_scheme(s.shape_function))));
+  s.flip_blend = grid.number("flip", s.flip_blend);
+  if (s.flip_blend < 0 || s.flip_blend > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+  s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", s.ddmp_alpha_peak);
+  if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
+  s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", s.ddmp_alpha_exponent);
+  if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
+  s.ddmp_on_grid = grid.boolean("ddmp_on_grid", s.ddmp_on_grid);
+
+  if (time.has("dt") && time.has("cfl"))
+    time.fail("dt", "give either dt (a fixed step) or cfl (a step from the wave speed), not both");
+  if (time.has("dt")) {
+    s.fixed_time_step = time.quantity("dt", dimension::time);
+    if (!(s.fixed_time_step > 0)) time.fail("dt", "must be positive");
+  } else {
+    s.cfl = time.number("cfl", mpm::default_cfl(s.shape_function));
+    if (!(s.cfl > 0) || s.cfl > 1) time.fail("cfl", "must lie in (0, 1]");
+  }
+  if (!time.has("quasi_static")) {  // else the quasi-static mode picks it (Scene)
+    s.mass_scaling = time.number("mass_scaling", s.mass_scaling);
+    if (!(s.mass_scaling > 0)) time.fail("mass_scaling", "must be positive");
+  }
+
+  s.gravity = gravity.vector("g", dimension::acceleration, "0m/s^2");
+  s.record_tag = output.text("record_tag", s.record_tag);
+}
+
+void read(TableReader& m, mpm::MaterialParameters& p) {
+  p.kind = mpm::parse_material_kind(m.choice("model", mpm::material_kind_names(), mpm::to_string(p.kind)));
+  p.young_modulus = m.quantity("E", dimension::pressure);
+  if (!(p.young_modulus > 0)) m.fail("E", "must be positive");
+  p.poisson_ratio = m.number("nu");
+  if (!(p.poisson_ratio > -1 && p.poisson_ratio < 0.5)) m.fail("nu", "must lie in (-1, 0.5)");
+  p.density = m.quantity("density", dimension::density);
+  if (!(p.density > 0)) m.fail("density", "must be positive");
+  if (p.kind == mpm::MaterialKind::j2) {  // paper B Eq. 10; the other models refuse these keys
+    p.initial_yield = m.quantity("y0", dimension::pressure);
+    if (!(p.initial_yield > 0)) m.fail("y0", "must be positive");
+    p.saturation_yield = m.has("y_inf") ? m.quantity("y_inf", dimension::pressure) : p.initial_yield;
+    if (!(p.saturation_yield > 0)) m.fail("y_inf", "must be positive");
+    p.saturation_rate = m.number("eta", p.saturation_rate);
+    if (!(p.saturation_rate >= 0)) m.fail("eta", "must be zero or positive");
+    p.linear_hardening = m.quantity("h", dimension::pressure, "0Pa");
+    if (!(p.linear_hardening >= 0)) m.fail("h", "must be zero or positive");
+  }
+}
+
+namespace {
+// contact = { model, friction, stiffness }: how a rigid body acts on the material.
+void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
+  auto contact = b.optional_table("contact");
+  if (!contact) return;
+  body.coupling = mpm::parse_rigid_coupling(
+      contact->choice("model", mpm::rigid_coupling_names(), mpm::to_string(mpm::RigidCoupling::no_slip)));
+  if (body.coupling == mpm::RigidCoupling::no_slip) {
+    for (const char* key : {"friction", "stiffness"})
+      if (contact->has(key)) contact->fail(key, "only penalty contact (model = \"penalty\") takes it");
+  } else {
+    // μ: a number ≥ 0 (0 slides freely) or "stick" (never slides).
+    if (contact->has_text("friction")) {
+      if (contact->text("friction") != "stick")
+        contact->fail("friction", "expected a number >= 0 or \"stick\"");
+      body.friction = std::numeric_limits<double>::infinity();
+    } else {
+      body.friction = contact->number("friction");
+      if (!(body.friction >= 0)) contact->fail("friction", "must be 0 (frictionless) or positive");
+    }
+    if (contact->has("stiffness")) {
+      body.contact_stiffness = contact->quantity("stiffness", dimension::stiffness);
+      if (!(body.contact_stiffness > 0)) contact->fail("stiffness", "must be positive (leave it out for the default)");
+    }
+  }
+  contact->finish();
+}
+}  // namespace
+
+void read(TableReader& b, mpm::RigidBodySettings& body) {
+  body.motion = mpm::parse_rigid_motion(b.choice("motion", mpm::rigid_motion_names(), ""));
+  body.shape = mpm::parse_rigid_shape(b.choice("shape", mpm::rigid_shape_names(), mpm::to_string(body.shape)));
+  if (body.shape == mpm::RigidShape::box) {
+    body.box_min = b.vector("min", dimension::length);
+    body.box_max = b.vector("max", dimension::length);
+    for (int a = 0; a < 3; ++a)
+      if (!(body.box_max[a] > body.box_min[a])) b.fail("max", "must exceed min along every axis (an empty box)");
+  } else {
+    body.plane_point = b.vector("point", dimension::length);
+    body.plane_normal = b.vector("normal", dimension::none);
+    if (!(body.plane_normal.norm() > 0)) b.fail("normal", "must be a non-zero direction (out of the body)");
+    body.plane_normal = body.plane_normal.normalized();
+  }
+  const std::string motion = mpm::to_string(body.motion);
+  if (body.motion == mpm::RigidMotion::driven) {
+    body.velocity = b.vector("velocity", dimension::velocity);
+    if (body.velocity.norm() == 0) b.fail("velocity", "a driven body needs a non-zero velocity");
+  } else if (body.motion == mpm::RigidMotion::free) {
+    body.velocity = b.vector("velocity", dimension::velocity, "0m/s");
+    body.mass = b.quantity("mass", dimension::mass);
+    if (!(body.mass > 0)) b.fail("mass", "must be positive");
+    body.gravity = b.boolean("gravity", body.gravity);
+  } else if (b.has("velocity")) {
+    b.fail("velocity", "a fixed rigid body stays at rest: it takes no velocity");
+  }
+  if (body.motion != mpm::RigidMotion::free) {
+    if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is " + motion + ")");
+    if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is " + motion + ")");
+  }
+  read_contact(b, body);
+}
+
+}  // namespace latmpm::scene_toml
