@@ -66,6 +66,13 @@ class SingleProcessDomain {
   std::vector<Real> sum_in_order(const std::vector<uint64_t>&, const std::vector<Real>& rows, size_t width) const {
     return sum_rows(rows, width);
   }
+  // The same for a sum that one process runs on from item to item across buckets (a sum
+  // over particles in their order): `rows` holds the items of bucket g after those of
+  // bucket g − 1, `counts[g]` of them, the buckets in ascending `keys`.
+  std::vector<Real> sum_in_sequence(const std::vector<uint64_t>&, const std::vector<uint32_t>&,
+                                    const std::vector<Real>& rows, size_t width) const {
+    return sum_rows(rows, width);
+  }
   Real reduce_max(Real local) const { return local; }
   Real reduce_min(Real local) const { return local; }
   DomainTraffic traffic() const { return {}; }
@@ -78,10 +85,11 @@ class SingleProcessDomain {
 }  // namespace latmpm::mpm
 
 #ifdef LATMPM_WITH_MPI
-#include "mpm/mpi_domain.hpp"
 namespace latmpm::mpm {
+class MpiDomain;
 using Domain = MpiDomain;
-}
+}  // namespace latmpm::mpm
+#include "mpm/mpi_domain.hpp"
 #else
 namespace latmpm::mpm {
 // The domain a Simulation runs on; the MPI build chooses MpiDomain.

@@ -68,6 +68,25 @@ std::vector<int> displacements(const std::vector<int>& counts) {
   for (size_t i = 1; i < counts.size(); ++i) d[i] = d[i - 1] + counts[i - 1];
   return d;
 }
+
+// Every process's keys, one after the other in rank order; sizes and displs per process.
+struct GatheredKeys {
+  std::vector<uint64_t> keys;
+  std::vector<int> sizes, displs;
+};
+
+GatheredKeys allgather_keys(const std::vector<uint64_t>& mine, MPI_Comm comm, int processes) {
+  GatheredKeys out;
+  const int n = int(mine.size());
+  out.sizes.assign(size_t(processes), 0);
+  check(MPI_Allgather(&n, 1, MPI_INT, out.sizes.data(), 1, MPI_INT, comm), "MPI_Allgather");
+  out.displs = displacements(out.sizes);
+  out.keys.resize(size_t(out.displs.back() + out.sizes.back()));
+  check(MPI_Allgatherv(mine.data(), n, MPI_UINT64_T, out.keys.data(), out.sizes.data(), out.displs.data(),
+                       MPI_UINT64_T, comm),
+        "MPI_Allgatherv");
+  return out;
+}
 }  // namespace
 
 // --- MpiSession ----------------------------------------------------------------------------
@@ -162,15 +181,11 @@ std::vector<Real> MpiDomain::sum_in_order(const std::vector<uint64_t>& keys, con
                                           size_t width) const {
   if (!distributed()) return sum_rows(rows, width);
   // Every process's items, merged by key.
-  int n = int(keys.size());
-  std::vector<int> sizes(size_t(size_), 0);
-  check(MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm_), "MPI_Allgather");
-  const auto displs = displacements(sizes);
-  const size_t total = size_t(displs.back() + sizes.back());
-  std::vector<uint64_t> all_keys(total);
-  check(MPI_Allgatherv(keys.data(), n, MPI_UINT64_T, all_keys.data(), sizes.data(), displs.data(), MPI_UINT64_T, comm_),
-        "MPI_Allgatherv");
-  std::vector<int> value_sizes(sizes), value_displs(displs);
+  const GatheredKeys all = allgather_keys(keys, comm_, size_);
+  const std::vector<uint64_t>& all_keys = all.keys;
+  const size_t total = all_keys.size();
+  const int n = int(keys.size());
+  std::vector<int> value_sizes(all.sizes), value_displs(all.displs);
   for (int q = 0; q < size_; ++q) value_sizes[size_t(q)] *= int(width), value_displs[size_t(q)] *= int(width);
   std::vector<Real> all_rows(total * width);
   check(MPI_Allgatherv(rows.data(), n * int(width), MPI_DOUBLE, all_rows.data(), value_sizes.data(),
@@ -185,6 +200,48 @@ std::vector<Real> MpiDomain::sum_in_order(const std::vector<uint64_t>& keys, con
   return sum;
 }
 
+// Every process's buckets to rank 0, which adds their items in bucket-key order and tells
+// the others the sums: a particle sum is not a sum of per-bucket partials.
+std::vector<Real> MpiDomain::sum_in_sequence(const std::vector<uint64_t>& keys, const std::vector<uint32_t>& counts,
+                                             const std::vector<Real>& rows, size_t width) const {
+  if (!distributed()) return sum_rows(rows, width);
+  int groups = int(keys.size()), values = int(rows.size());
+  std::vector<int> group_sizes(static_cast<size_t>(size_)), value_sizes(static_cast<size_t>(size_));
+  check(MPI_Gather(&groups, 1, MPI_INT, group_sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
+  check(MPI_Gather(&values, 1, MPI_INT, value_sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
+  const auto group_displs = displacements(group_sizes), value_displs = displacements(value_sizes);
+  const bool root = rank_ == 0;
+  std::vector<uint64_t> all_keys(root ? size_t(group_displs.back() + group_sizes.back()) : 0);
+  std::vector<uint32_t> all_counts(all_keys.size());
+  std::vector<Real> all_rows(root ? size_t(value_displs.back() + value_sizes.back()) : 0);
+  check(MPI_Gatherv(keys.data(), groups, MPI_UINT64_T, all_keys.data(), group_sizes.data(), group_displs.data(),
+                    MPI_UINT64_T, 0, comm_),
+        "MPI_Gatherv");
+  check(MPI_Gatherv(counts.data(), groups, MPI_UINT32_T, all_counts.data(), group_sizes.data(), group_displs.data(),
+                    MPI_UINT32_T, 0, comm_),
+        "MPI_Gatherv");
+  check(MPI_Gatherv(rows.data(), values, MPI_DOUBLE, all_rows.data(), value_sizes.data(), value_displs.data(),
+                    MPI_DOUBLE, 0, comm_),
+        "MPI_Gatherv");
+  std::vector<Real> sum(width, Real(0));
+  if (root) {
+    // Where each bucket's items start, then the buckets in key order.
+    std::vector<size_t> first(all_keys.size());
+    for (int q = 0, g = 0; q < size_; ++q) {
+      size_t at = size_t(value_displs[size_t(q)]);
+      for (int k = 0; k < group_sizes[size_t(q)]; ++k, ++g) first[size_t(g)] = at, at += all_counts[size_t(g)] * width;
+    }
+    std::vector<uint32_t> order(all_keys.size());
+    for (uint32_t g = 0; g < order.size(); ++g) order[g] = g;
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return all_keys[a] < all_keys[b]; });
+    for (uint32_t g : order)
+      for (size_t i = 0; i < all_counts[g]; ++i)
+        for (size_t c = 0; c < width; ++c) sum[c] += all_rows[first[g] + i * width + c];
+  }
+  check(MPI_Bcast(sum.data(), int(width), MPI_DOUBLE, 0, comm_), "MPI_Bcast");
+  return sum;
+}
+
 void MpiDomain::repartition(const Particles& ps, Real inv_h) {
   std::map<uint64_t, uint64_t> local;
   for (size_t p = 0; p < ps.size(); ++p) ++local[morton_key(bucket_of(ps.position[p], inv_h))];
@@ -194,13 +251,7 @@ void MpiDomain::repartition(const Particles& ps, Real inv_h) {
     // the last sort is listed by each of them.
     std::vector<uint64_t> flat;
     for (const auto& c : counts) flat.push_back(c.first), flat.push_back(c.second);
-    int n = int(flat.size());
-    std::vector<int> sizes(size_t(size_), 0);
-    check(MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm_), "MPI_Allgather");
-    const auto displs = displacements(sizes);
-    std::vector<uint64_t> all(size_t(displs.back() + sizes.back()));
-    check(MPI_Allgatherv(flat.data(), n, MPI_UINT64_T, all.data(), sizes.data(), displs.data(), MPI_UINT64_T, comm_),
-          "MPI_Allgatherv");
+    const std::vector<uint64_t> all = allgather_keys(flat, comm_, size_).keys;
     std::map<uint64_t, uint64_t> merged;
     for (size_t i = 0; i + 1 < all.size(); i += 2) merged[all[i]] += all[i + 1];
     counts.assign(merged.begin(), merged.end());
@@ -264,15 +315,10 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
   const int n = int(grid.block_count());
   std::vector<uint64_t> mine(static_cast<size_t>(n));
   for (int b = 0; b < n; ++b) mine[size_t(b)] = grid.key(size_t(b));
-  std::vector<int> sizes(size_t(size_), 0);
-  check(MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm_), "MPI_Allgather");
-  const auto displs = displacements(sizes);
-  std::vector<uint64_t> all(size_t(displs.back() + sizes.back()));
-  check(MPI_Allgatherv(mine.data(), n, MPI_UINT64_T, all.data(), sizes.data(), displs.data(), MPI_UINT64_T, comm_),
-        "MPI_Allgatherv");
+  const GatheredKeys all = allgather_keys(mine, comm_, size_);
   auto holds = [&](int q, uint64_t key) {
-    const auto first = all.begin() + displs[size_t(q)];
-    return std::binary_search(first, first + sizes[size_t(q)], key);
+    const auto first = all.keys.begin() + all.displs[size_t(q)];
+    return std::binary_search(first, first + all.sizes[size_t(q)], key);
   };
   // A block's node sums (reactions) count on the lowest rank that holds it.
   counted_.assign(size_t(n), 1);

@@ -70,6 +70,8 @@ class MpiDomain {
   Real reduce_sum(Real local) const;
   Vec3 reduce_sum(const Vec3& local) const;
   std::vector<Real> sum_in_order(const std::vector<uint64_t>& keys, const std::vector<Real>& rows, size_t width) const;
+  std::vector<Real> sum_in_sequence(const std::vector<uint64_t>& keys, const std::vector<uint32_t>& counts,
+                                    const std::vector<Real>& rows, size_t width) const;
   Real reduce_max(Real local) const;
   Real reduce_min(Real local) const;
   int process_count() const { return size_; }

@@ -183,14 +183,32 @@ Real AverageStressForce::initial_cross_section(const Simulation& sim, const Vec3
 Real AverageStressForce::operator()(const Simulation& sim) const {
   const Particles& ps = sim.particles();
   const Vec3& a = axis_;
-  Real stress_volume = 0, volume = 0;
-  for (size_t p = 0; p < ps.size(); ++p) {
-    if (!counts(sim, p)) continue;
-    const Real along = a.dot(to_matrix(ps.stress[p]) * a);
-    const Real v = ps.deformation[p].determinant() * ps.volume0[p];
-    stress_volume += along * v;
-    volume += v;
+  // Point by point in the particles' order; with several processes in the one-process
+  // order (bucket by bucket, Domain::sum_in_sequence). Before the first sort (no buckets)
+  // the particles are one run in point order, on every process alike.
+  const auto& buckets = sim.state().buckets.buckets();
+  const bool sorted = !buckets.empty();
+  std::vector<uint64_t> keys;
+  std::vector<uint32_t> items;
+  std::vector<Real> rows;
+  auto add = [&](size_t begin, size_t end) {
+    uint32_t count = 0;
+    for (size_t p = begin; p < end; ++p) {
+      if (!counts(sim, p)) continue;
+      const Real along = a.dot(to_matrix(ps.stress[p]) * a);
+      const Real v = ps.deformation[p].determinant() * ps.volume0[p];
+      rows.insert(rows.end(), {along * v, v});
+      ++count;
+    }
+    items.push_back(count);
+  };
+  if (sorted) {
+    for (const Bucket& b : buckets) keys.push_back(bucket_order_key(b)), add(b.begin, b.end);
+  } else {
+    keys.push_back(0), add(0, ps.size());
   }
+  const auto sums = sim.domain().sum_in_sequence(keys, items, rows, 2);
+  const Real stress_volume = sums[0], volume = sums[1];
   return volume > 0 ? area_ * stress_volume / volume : 0;
 }
 

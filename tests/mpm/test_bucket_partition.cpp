@@ -1,8 +1,9 @@
 // The MPI domain's partition of particle buckets (bucket_partition.hpp): a Morton curve cut
 // into ranges of about equal particle count, an owner for every bucket in space.
-#include <catch2/catch_test_macros.hpp>
+#include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "mpm/bucket_partition.hpp"
