@@ -3,7 +3,8 @@
 #   QUICK=1: the 2D concentrated-load beam (60x20 cells) and the 3D beam (24x8x6 cells, half
 #            model), 200 iterations at most: about 4 minutes on 2 cores.
 #   full:    the 2D concentrated-load beam (60x20 cells), the Michell truss (40x20), the 2D
-#            distributed-load beam (40x20) with and without LETO's narrow band, the 3D beam
+#            distributed-load beam (40x20) with and without LETO's narrow band (without:
+#            Eq. 38's sharpening) and without the connectivity correction, the 3D beam
 #            (24x8x6 cells, half model), the 3D bridge (24x12x6 cells, quarter model), the
 #            2D beam with a neo-Hookean solid under a 150 times larger load (LETO only).
 # Both end with the optimised 3D beam in latmpm-solve: each method's STL (the whole part,

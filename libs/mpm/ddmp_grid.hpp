@@ -54,6 +54,8 @@ struct DdmpNodalValues {
   std::vector<Real> coefficients;
   std::vector<uint8_t> block_has_small;  // per block: some node hands on
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
+  std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache), valid once alpha_filled
+  bool alpha_filled = false;
 
   Real* node(size_t block, int n) { return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count; }
   const Real* node(size_t block, int n) const {
@@ -147,6 +149,7 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   nv.coefficients.assign(blocks * SparseGrid::nodes_per_block * 4, Real(0));
   nv.block_has_small.assign(blocks, 0);
   nv.neighbours.resize(blocks);
+  nv.alpha_filled = false;  // a new step: the points have moved
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);
     for (int dx = -1; dx <= 1; ++dx)
@@ -155,6 +158,14 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
           nv.neighbours[b][size_t(neighbour_index(dx, dy, dz))] = grid.find(c[0] + dx, c[1] + dy, c[2] + dz);
   });
 }
+
+// The α cache of a particle pass: the first pass of a step (after prepare_ddmp_nodal_values)
+// fills it; end_ddmp_alpha_pass after a pass that visited every point makes it valid.
+inline DdmpAlphaCache begin_ddmp_alpha_pass(DdmpNodalValues& nv, size_t particles) {
+  if (!nv.alpha_filled) nv.alpha.resize(particles);
+  return {nv.alpha.data(), !nv.alpha_filled};
+}
+inline void end_ddmp_alpha_pass(DdmpNodalValues& nv) { nv.alpha_filled = true; }
 
 // Zeroes every node's values (before a scatter that maps the stress again).
 inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) { std::fill(nv.values.begin(), nv.values.end(), Real(0)); }
@@ -289,9 +300,15 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
     const Real* block = grid.block(b);
     std::fill_n(coefficients_of(nv, b, 0), 4 * SparseGrid::nodes_per_block, Real(0));
     nv.block_has_small[b] = 0;
+    // A node hands on when its mass is small and no body holds it, or when a body holds it
+    // but no deformable point gives it mass (a node inside a rigid plate of points, one
+    // cell beyond the material: docs/solver.md, "Held nodes without mass").
+    const auto hands_on = [&](int n) {
+      const Real m = block[n * lane::count + lane::mass];
+      return m < small_mass && (block[n * lane::count + lane::constraint] == 0 || m == 0);
+    };
     bool any = false;
-    for (int n = 0; n < SparseGrid::nodes_per_block; ++n)
-      any |= block[n * lane::count + lane::mass] < small_mass && block[n * lane::count + lane::constraint] == 0;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) any |= hands_on(n);
     if (!any) return;
     WideHalo<1> mass;
     load_halo<reach, 1>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + lane::mass; }, mass);
@@ -299,7 +316,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           const int n = (i * bw + j) * bw + k;
-          if (block[n * lane::count + lane::mass] >= small_mass || block[n * lane::count + lane::constraint] != 0) continue;
+          if (!hands_on(n)) continue;
           Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
           bool touches_mass = false;  // a node with mass within one cell: its L or force matters
           for (int x = -1; x <= 1; ++x)

@@ -29,9 +29,9 @@ std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& 
       const Real m = node[lane::mass];
       const int body = constrained_body(node);
       if (!(m > 0)) {
-        // A held node without mass still moves with its body: DDMP's smoothed gradient reads
-        // the velocity of nodes one cell beyond the points' cells, and its smoothed force
-        // reaches them; that force acts on the body, so it is part of the reaction.
+        // A held node without mass still moves with its body, and any force on it acts on the
+        // body (its reaction). DDMP's such nodes next to material have handed their force on
+        // and have their velocity read back afterwards (ddmp_grid.hpp, small-mass nodes).
         Vec3 v = Vec3::Zero();
         if (body >= 0 && !bodies[size_t(body)].hold_slip) {
           v = bodies[size_t(body)].velocity;

@@ -99,6 +99,14 @@ inline Real ddmp_partition(const Vec3& f, const DdmpPartition& alpha = {}) {
   return alpha.peak * std::pow(p, alpha.exponent);
 }
 
+// α per point for one step (DdmpGridShape): every pass of a step sees the point at x^n, so
+// the step's first pass computes α (a pow, 14 % of a DDMP step when each pass did) and
+// keeps it at values[p]; the later passes read it. values == nullptr: compute every time.
+struct DdmpAlphaCache {
+  Real* values = nullptr;
+  bool fill = true;
+};
+
 // The particle's cell, its linear weights and α: what both evaluations of Eq. 7 share.
 struct DdmpCellFrame {
   int cell[3];
@@ -106,7 +114,8 @@ struct DdmpCellFrame {
   Real alpha;
 };
 
-inline DdmpCellFrame ddmp_cell_frame(const Vec3& x, Real inv_h, const DdmpPartition& partition) {
+inline DdmpCellFrame ddmp_cell_frame(const Vec3& x, Real inv_h, const DdmpPartition& partition,
+                                     DdmpAlphaCache cache = {}, size_t p = 0) {
   DdmpCellFrame fr;
   Vec3 f;
   for (int a = 0; a < 3; ++a) {
@@ -116,7 +125,12 @@ inline DdmpCellFrame ddmp_cell_frame(const Vec3& x, Real inv_h, const DdmpPartit
     fr.N[a][0] = 1 - f[a];
     fr.N[a][1] = f[a];
   }
-  fr.alpha = ddmp_partition(f, partition);
+  if (cache.values && !cache.fill) {
+    fr.alpha = cache.values[p];
+  } else {
+    fr.alpha = ddmp_partition(f, partition);
+    if (cache.values) cache.values[p] = fr.alpha;
+  }
   return fr;
 }
 
@@ -172,9 +186,10 @@ struct DdmpCornerStencil : Stencil<2> {
   Real corner[8];
 };
 
-inline DdmpCornerStencil make_ddmp_corner_stencil(const Vec3& x, Real inv_h, const DdmpPartition& partition = {}) {
+inline DdmpCornerStencil make_ddmp_corner_stencil(const Vec3& x, Real inv_h, const DdmpPartition& partition = {},
+                                                   DdmpAlphaCache cache = {}, size_t p = 0) {
   DdmpCornerStencil st;
-  const DdmpCellFrame fr = ddmp_cell_frame(x, inv_h, partition);
+  const DdmpCellFrame fr = ddmp_cell_frame(x, inv_h, partition, cache, p);
   st.alpha = fr.alpha;
   for (int a = 0; a < 3; ++a) {
     st.base[a] = fr.cell[a];

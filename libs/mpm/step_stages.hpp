@@ -180,6 +180,8 @@ void scatter(SolverState& s, StepContext& c) {
   const auto& list = s.buckets.buckets();
   constexpr bool nodal_stress = Mode::force && has_grid_smoothed_gradient<Shape>::value;
   if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
+  DdmpAlphaCache alpha_cache;
+  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   for (int ci = 0; ci < 8; ++ci) {
     const auto& colour = s.buckets.colours()[size_t(ci)];
     // Buckets of one colour are two buckets apart: their boxes never overlap.
@@ -189,6 +191,7 @@ void scatter(SolverState& s, StepContext& c) {
         const Bucket& b = list[colour[k]];
         buffer.attach(b);
         buffer.ddmp_alpha = c.ddmp_partition();
+        buffer.ddmp_alpha_cache = alpha_cache;
         clear_box(b, buffer);
         if constexpr (nodal_stress) clear_ddmp_box(b, c.tables[colour[k]], buffer);
         scatter_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(),
@@ -199,6 +202,8 @@ void scatter(SolverState& s, StepContext& c) {
     });
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
+  // A pass that marks constraints visits every point, rigid ones too: α is then complete.
+  if constexpr (has_grid_smoothed_gradient<Shape>::value && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }
@@ -211,12 +216,15 @@ void gather(SolverState& s, StepContext& c, Real dt) {
   const GatherParameters parameters{st.cell_size, dt, st.flip_blend, st.gravity, st.min_jacobian};
   constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && has_grid_smoothed_gradient<Shape>::value;
   if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(s.grid, Mode::gradient_lane, st.cell_size, c.ddmp_nodal);
+  DdmpAlphaCache alpha_cache;
+  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketBuffer& buffer = c.buffers.local();
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
       const Bucket& b = list[bi];
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
+      buffer.ddmp_alpha_cache = alpha_cache;
       copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,

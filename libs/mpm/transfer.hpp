@@ -98,7 +98,7 @@ inline auto particle_stencil(const Particles& ps, size_t p, Real h, const Bucket
   if constexpr (uses_domain_vertices<Shape>::value)
     return make_cpdi_box_stencil(ps, p, h);
   else if constexpr (has_grid_smoothed_gradient<Shape>::value)
-    return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha);
+    return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, buffer.ddmp_alpha_cache, p);
   else if constexpr (has_smoothed_gradient<Shape>::value)
     return make_ddmp_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, Gradient);
   else if constexpr (trims_zero_planes<Shape>::value)

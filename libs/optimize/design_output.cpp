@@ -76,7 +76,9 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
     << "volume_bound = " << number(scene.settings.volume_fraction) << "\n"
     << "refine = " << scene.refine << "\n";
   for (const auto& o : outcomes) {
+    const bool own_bound = o.method == "leto" && scene.leto_volume_fraction > 0;
     s << "\n[" << o.method << "]\n"
+      << "volume_bound = " << number(own_bound ? scene.leto_volume_fraction : scene.settings.volume_fraction) << "\n"
       << "iterations = " << o.result.history.size() << "\n"
       << "converged = " << (o.result.converged ? "true" : "false") << "\n"
       << "seconds_per_iteration = " << number(o.seconds_per_iteration) << "\n"

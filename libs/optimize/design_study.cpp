@@ -41,6 +41,7 @@ MethodOutcome run_method(const OptimizeScene& scene, const std::string& method,
   std::unique_ptr<Parameterisation> design;
   Real binarise = 0;
   if (method == "leto") {
+    if (scene.leto_volume_fraction > 0) settings.volume_fraction = scene.leto_volume_fraction;
     design = std::make_unique<LetoDesign>(scene.grid, scene.leto, settings.volume_fraction);
     binarise = scene.leto_binarise;
   } else {

@@ -1,5 +1,7 @@
 #include "optimize/leto_design.hpp"
 
+#include <algorithm>
+
 namespace latmpm::optimize {
 
 LetoDesign::LetoDesign(const DesignGrid& grid, const LetoSettings& settings, Real volume_fraction)
@@ -40,15 +42,36 @@ Carriers LetoDesign::carriers(const std::vector<Real>& x) const {
   return c;
 }
 
+void LetoDesign::start_iteration(int k) {
+  iteration_ = k;
+  if (settings_.sharpen_end > 0) {
+    const Real t = std::min(Real(1), Real(k) / Real(std::max(1, settings_.sharpen_ramp)));
+    sharpening_.beta = 1.01 + t * (settings_.sharpen_end - 1.01);
+  }
+}
+
+bool LetoDesign::continuation_done() const {
+  return settings_.sharpen_end <= 0 || iteration_ >= settings_.sharpen_ramp;
+}
+
 void LetoDesign::densities(const std::vector<Real>& x, std::vector<Real>& density) {
   transfer_.densities(carriers(x), kernel_sum_, density);
+  if (settings_.sharpen_end <= 0) return;
+  clamped_ = density;
+  for (size_t q = 0; q < density.size(); ++q) density[q] = sharpening_.value(clamped_[q]);
 }
 
 std::vector<Real> LetoDesign::pull_back(const std::vector<Real>& x, const std::vector<Real>& d_density) const {
   const Carriers c = carriers(x);
   std::vector<Real> d_rho;
   std::vector<Vec3> d_pos;
-  transfer_.pull_back(c, kernel_sum_, d_density, d_rho, d_pos);
+  if (settings_.sharpen_end > 0) {
+    std::vector<Real> d_clamped(d_density);
+    for (size_t q = 0; q < d_clamped.size(); ++q) d_clamped[q] *= sharpening_.derivative(clamped_[q]);
+    transfer_.pull_back(c, kernel_sum_, d_clamped, d_rho, d_pos);
+  } else {
+    transfer_.pull_back(c, kernel_sum_, d_density, d_rho, d_pos);
+  }
   std::vector<Real> g(d_rho);
   for (const Vec3& v : d_pos)
     for (int a = 0; a < grid_.dimension(); ++a) g.push_back(v[a]);

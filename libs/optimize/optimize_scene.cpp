@@ -131,8 +131,15 @@ void read_leto(TableReader t, OptimizeScene& s) {
   b.end = t.number("band_end", 0.9);
   if (!(b.start >= 0 && b.start <= b.end && b.end < 1)) t.fail("band_end", "need 0 ≤ band_start ≤ band_end < 1");
   b.ramp_iterations = int(t.integer("band_ramp", 90));
+  l.sharpen_end = t.number("sharpen", 0);
+  if (!(l.sharpen_end == 0 || l.sharpen_end > 1.01)) t.fail("sharpen", "must be 0 (off) or the final β of Eq. 38, above 1.01");
+  l.sharpen_ramp = int(t.integer("sharpen_ramp", b.ramp_iterations));
+  if (l.sharpen_ramp < 1) t.fail("sharpen_ramp", "must be at least 1 (iterations)");
   s.correction_slack = int(t.integer("correction_slack", 2 * s.grid.per_cell));
   s.leto_binarise = t.number("binarise", 0.9);
+  s.leto_volume_fraction = t.number("volume_fraction", 0);
+  if (!(s.leto_volume_fraction == 0 || (s.leto_volume_fraction > 0 && s.leto_volume_fraction < 1)))
+    t.fail("volume_fraction", "must lie in (0, 1), or 0 for optimize.volume_fraction");
   t.finish();
 }
 

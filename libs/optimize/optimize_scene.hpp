@@ -26,6 +26,9 @@ struct OptimizeScene {
   LetoSettings leto;
   int correction_slack = 4;    // lattice steps (connectivity correction), < 0: off
   Real leto_binarise = 0.9;    // paper C Sec. 4.2
+  // LETO's own volume bound (paper C Sec. 4.2: set below the volume of SIMP's binary design,
+  // since LETO's binary volume can end above its bound); 0: optimize.volume_fraction.
+  Real leto_volume_fraction = 0;
   SimpSettings simp;
   Real simp_binarise = 0.5;
   int simp_max_iterations = 0;  // 0: optimize.max_iterations

@@ -56,13 +56,17 @@ else
   run beam-2d cantilever-2d.toml
   run michell-2d michell-2d.toml
   run distributed-2d distributed-2d.toml
-  run distributed-2d-no-band distributed-2d.toml --set optimize.methods=leto --set leto.narrow_band=false
+  # The band-free variant of paper C Fig. 11, with its Eq. 38 sharpening (docs/paper-c.md).
+  run distributed-2d-no-band distributed-2d.toml --set optimize.methods=leto --set leto.narrow_band=false \
+    --set leto.sharpen=10
+  # QR patterns without the connectivity correction (paper C Sec. 3.4, Fig. 7).
+  run distributed-2d-no-correction distributed-2d.toml --set optimize.methods=leto --set leto.correction_slack=-1
   run beam-2d-no-correction cantilever-2d.toml --set optimize.methods=leto --set leto.correction_slack=-1
   run beam-3d beam-3d.toml
   explicit_all beam-3d
   run bridge-3d bridge-3d.toml
   run beam-2d-neo-hookean cantilever-2d-neo-hookean.toml
-  examples="beam-2d beam-2d-no-correction michell-2d distributed-2d distributed-2d-no-band beam-3d bridge-3d beam-2d-neo-hookean"
+  examples="beam-2d beam-2d-no-correction michell-2d distributed-2d distributed-2d-no-band distributed-2d-no-correction beam-3d bridge-3d beam-2d-neo-hookean"
 fi
 python3 "$src/pipelines/optimize/summary.py" "$out" $examples > "$out/summary.md.tmp"
 mv "$out/summary.md.tmp" "$out/summary.md"

@@ -1,8 +1,12 @@
 // DDMP between rigid plates of points (paper A Sec. 4's set-up): its smoothed gradient reads
 // the velocity of, and puts force on, grid nodes one cell beyond the points' cells — inside
-// the plates, where the column's points give no mass. Those held nodes must move with their
-// plate and pass their force into its reaction, or the driven plate's column is strained
-// where the plate is and the two plates disagree on the load.
+// the plates, where the column's points give no mass. Those held nodes hand on like
+// small-mass nodes (ddmp_grid.hpp): their force to the sizeable nodes around them (the
+// plate's face nodes pass their share into its reaction), their velocity read back as the
+// column's field extrapolated. Left at rest with the force dropped, the plates disagree
+// (0.443 / 0.305 N); moved with the plate, the end cells' smoothed strain rate averages the
+// column's with the plate's zero and the column is 7 % soft (0.475 / 0.479 N); handed on,
+// 0.504 / 0.504 N against EA u/L 0.512 N (docs/solver.md, "Held nodes without mass").
 #include <catch2/catch.hpp>
 
 #include "mpm/simulation.hpp"
@@ -46,6 +50,7 @@ TEST_CASE("A DDMP column pressed between a fixed base and a driven plate carries
   const Real elastic_load = E * w * w * (travel_sum / span) / L;
   INFO("plate " << plate << " N, base " << base << " N, EA u/L " << elastic_load << " N");
   CHECK(std::abs(plate - base) < 0.03 * elastic_load);
-  CHECK(plate == Approx(elastic_load).epsilon(0.1));
-  CHECK(base == Approx(elastic_load).epsilon(0.1));
+  // 4 %: above the measured 1.5 %, below the 7 % of a soft plate end.
+  CHECK(plate == Approx(elastic_load).epsilon(0.04));
+  CHECK(base == Approx(elastic_load).epsilon(0.04));
 }

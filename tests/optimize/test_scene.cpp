@@ -59,6 +59,9 @@ TEST_CASE("Bad optimisation scenes are refused with one line naming the key", "[
   const auto [overrides, expected] = GENERATE(
       Case{{"optimize.volume_fraction=1.2"}, "optimize.volume_fraction: must lie in (0, 1)"},
       Case{{"optimize.volume_fraction=0"}, "optimize.volume_fraction: must lie in (0, 1)"},
+      Case{{"leto.volume_fraction=1"}, "leto.volume_fraction: must lie in (0, 1)"},
+      Case{{"material.model=\"j2\""}, "material.model: expected linear_elastic or neo_hookean"},
+      Case{{"leto.sharpen=0.5"}, "leto.sharpen: must be 0 (off)"},
       Case{{"loads.tip.min=[\"20mm\", \"20mm\", \"0mm\"]", "loads.tip.max=[\"21mm\", \"21mm\", \"1mm\"]"},
            "loads.tip.min: the load acts on no material"},
       Case{{"domain.size=[\"0mm\", \"4mm\", \"1mm\"]"}, "domain.size: the design domain is empty"},

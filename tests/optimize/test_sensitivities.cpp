@@ -63,6 +63,19 @@ void check_gradients(Parameterisation& design, const Objective& f, std::vector<d
   }
 }
 
+// A random LETO design: carrier densities uniform in [lo, hi], positions jittered by up to
+// ±jitter point spacings.
+std::vector<double> random_carriers(const LetoDesign& design, const DesignGrid& g, unsigned seed, double lo, double hi,
+                                    double jitter) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> density(lo, hi), offset(-jitter, jitter);
+  std::vector<double> x = design.initial();
+  const size_t n = g.point_count();
+  for (size_t c = 0; c < n; ++c) x[c] = density(rng);
+  for (size_t j = n; j < x.size(); ++j) x[j] += offset(rng) * g.spacing();
+  return x;
+}
+
 }  // namespace
 
 TEST_CASE("LETO's adjoint compliance and volume gradients match finite differences", "[optimize]") {
@@ -70,13 +83,8 @@ TEST_CASE("LETO's adjoint compliance and volume gradients match finite differenc
   const DesignGrid g = test::small_grid(planar);
   const LoadCase lc = test::small_load_case(g);
   LetoDesign design(g, LetoSettings{}, 0.5);
-  // A random design: carrier densities in [0.2, 0.9], positions jittered by up to ±0.4 s.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> density(0.2, 0.9), jitter(-0.4, 0.4);
-  std::vector<double> x = design.initial();
+  std::vector<double> x = random_carriers(design, g, 7, 0.2, 0.9, 0.4);
   const size_t n = g.point_count();
-  for (size_t c = 0; c < n; ++c) x[c] = density(rng);
-  for (size_t j = n; j < x.size(); ++j) x[j] += jitter(rng) * g.spacing();
   std::vector<size_t> components;
   for (size_t k = 0; k < 6; ++k) components.push_back((k * 37 + 5) % n);           // densities
   for (size_t k = 0; k < 6; ++k) components.push_back(n + (k * 53 + 11) % (x.size() - n));  // positions
@@ -94,6 +102,34 @@ TEST_CASE("LETO's adjoint compliance and volume gradients match finite differenc
     check_gradients(design, f, x, {components.begin(), components.begin() + 6}, 1e-6);
     check_gradients(design, f, x, {components.begin() + 6, components.end()}, 1e-9);
   }
+}
+
+TEST_CASE("LETO's gradients through Eq. 38's sharpening match finite differences", "[optimize]") {
+  const DesignGrid g = test::small_grid(true);
+  const LoadCase lc = test::small_load_case(g);
+  LetoSettings settings;
+  settings.sharpen_end = 4;
+  LetoDesign design(g, settings, 0.5);
+  design.start_iteration(1000);  // β = 4
+  CHECK(design.continuation_done());
+  const std::vector<double> x = random_carriers(design, g, 5, 0.2, 0.9, 0.4);
+  const size_t n = g.point_count();
+  const Objective f{g, lc, test::small_material(1e-9), std::vector<char>(n, 1)};
+  check_gradients(design, f, x, {3, 17, 40, 77, 101}, 1e-6);
+  check_gradients(design, f, x, {n + 5, n + 30, n + 91}, 1e-9);
+}
+
+TEST_CASE("Eq. 38's sharpening keeps 0, 1/2 and 1, is flat at both ends and steepens with beta", "[optimize]") {
+  for (double beta : {1.01, 2.0, 10.0}) {
+    const Sharpening s{beta};
+    CHECK(s.value(0) == 0);
+    CHECK(s.value(1) == 1);
+    CHECK(s.value(0.5) == Approx(0.5));
+    CHECK(s.derivative(1e-9) < 1e-6 + (beta < 1.1 ? 2 : 0));
+    for (double r : {0.1, 0.3, 0.7}) CHECK(s.derivative(r) == Approx((s.value(r + 1e-6) - s.value(r - 1e-6)) / 2e-6).epsilon(1e-5));
+  }
+  CHECK(Sharpening{10}.value(0.4) < 0.02);
+  CHECK(Sharpening{1.01}.value(0.4) == Approx(0.4).epsilon(0.01));
 }
 
 TEST_CASE("SIMP's filtered and projected gradients match finite differences", "[optimize]") {
@@ -118,12 +154,8 @@ TEST_CASE("The neo-Hookean adjoint gradient matches finite differences under a l
   LoadCase lc = test::small_load_case(g);
   lc.loads[0].force *= 5;
   LetoDesign design(g, LetoSettings{}, 0.5);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> density(0.4, 0.9), jitter(-0.3, 0.3);
-  std::vector<double> x = design.initial();
+  std::vector<double> x = random_carriers(design, g, 11, 0.4, 0.9, 0.3);
   const size_t n = g.point_count();
-  for (size_t c = 0; c < n; ++c) x[c] = density(rng);
-  for (size_t j = n; j < x.size(); ++j) x[j] += jitter(rng) * g.spacing();
   std::vector<double> rho;
   design.densities(x, rho);
   SimpMaterial material = test::small_material(0);

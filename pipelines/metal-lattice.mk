@@ -1,0 +1,50 @@
+# make metal-lattice [QUICK=1]: a metal lattice crushed by rigid platens (issue 17, "Beyond
+#   the paper"; docs/paper-b.md, "make metal-lattice"). Paper A's T2P30 tetrahedral lattice
+#   (L = 8 mm, t = 2.4 mm, phi = 30 deg) without printed plates, in Ti-6Al-4V as finite-strain
+#   J2 plasticity (paper B Eq. 9-13), between a fixed base and a platen driven down at 16 m/s,
+#   both rigid half-spaces in penalty contact with Coulomb friction mu = 0.3 (and mu = 0 for
+#   comparison), uGIMP on a 1 mm grid, 2 points per cell per direction.
+#   QUICK=1: 2x2x2 cells, 5 mm of travel (24 %). Paper size: 5x5x5 cells, 12 mm (24 %),
+#   about 1 h per run on this machine (not run; docs/paper-b.md).
+# Results in results/metal-lattice/{paper,quick}/: summary.md (latmpm-post: load against
+# travel, plateau, absorbed energy; the runs' cost), energy.png (work in, plastic work,
+# elastic energy: what a release could give back at most), run-<case>/ (the solver's runs).
+# Chain: latmpm-lattice --preset T2P30 --no-plates -> latmpm-voxelize -> latmpm-solve
+# pipelines/metal-lattice/ti-lattice.toml (one run a row) -> latmpm-post.
+include pipelines/common.mk
+
+ML_SRC   := pipelines/metal-lattice
+ML_MODE  := $(if $(QUICK),quick,paper)
+ML_OUT   := results/metal-lattice/$(ML_MODE)
+ML_CELLS := $(if $(QUICK),2x2x2,5x5x5)
+
+ML_ROWS := $(call pipeline_rows,$(ML_SRC)/cases-$(ML_MODE).txt,0)
+$(call pipeline_table,$(ML_OUT),$(ML_SRC)/cases-$(ML_MODE).txt,$(ML_ROWS))
+ML_SELECTED := $(call pipeline_selected,$(ML_ROWS))
+$(call pipeline_check_cases,metal-lattice,$(ML_ROWS))
+ML_FIRST := $(call pipeline_field,$(firstword $(ML_SELECTED)),1)
+
+.PHONY: metal-lattice metal-lattice-results
+metal-lattice:
+	$(MAKE) build
+	$(MAKE) metal-lattice-results
+
+metal-lattice-results: $(ML_OUT)/summary.md $(ML_OUT)/energy.png
+	@echo "metal-lattice: results in $(ML_OUT)/summary.md"
+
+$(ML_OUT)/geometry-T2P30.h5: | $(BIN)/latmpm-lattice
+	@mkdir -p $(@D)
+	$(BIN)/latmpm-lattice --preset T2P30 --cells $(ML_CELLS) --no-plates --quiet -o $@
+
+$(ML_OUT)/points-T2P30.h5: $(ML_OUT)/geometry-T2P30.h5 | $(BIN)/latmpm-voxelize
+	$(BIN)/latmpm-voxelize $< --cell 1mm --ppc 2 --quiet -o $@
+
+$(eval $(call pipeline_post,$(ML_OUT),$(call pipeline_label_runs,$(ML_OUT),$(ML_SELECTED)),--kind compression --load load_fixed,Ti-6Al-4V T2P30 lattice under rigid platens,$(ML_SRC)/notes.md))
+
+# The first case's energies against the platen's travel.
+$(ML_OUT)/energy.png: $(ML_OUT)/run-$(ML_FIRST)/done $(ML_SRC)/plot_energy.gp
+	gnuplot -e "csv='$(ML_OUT)/run-$(ML_FIRST)/series.csv'; png='$@'; label='$(ML_FIRST)'" $(ML_SRC)/plot_energy.gp
+
+$(ML_OUT)/summary.md: pipelines/metal-lattice.mk
+
+.PRECIOUS: $(ML_OUT)/geometry-T2P30.h5 $(ML_OUT)/points-T2P30.h5
