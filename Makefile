@@ -4,13 +4,16 @@
 #   make demo   install, build, run the default experiment
 #   make bench  build and run the benchmarks (figures go to docs/benchmarks.md by hand)
 #   make fuzz   build and run the hostile-input suite, every case (docs/robustness.md)
+#   make mpi    install OpenMPI, build the solver on MPI in build-mpi/ (docs/cluster.md):
+#               mpirun -np 2 build-mpi/bin/latmpm-solve SCENE -o RUN
 BUILD      ?= build
 BUILD_TYPE ?= Release
 JOBS       ?= $(shell nproc)
 BIN        := $(abspath $(BUILD))/bin
 CMAKE_ARGS ?=
+MPI_BUILD  ?= build-mpi
 
-.PHONY: all build configure deps test demo bench fuzz clean help
+.PHONY: all build configure deps test demo bench fuzz mpi clean help
 all: build
 
 help:
@@ -42,6 +45,12 @@ bench: deps
 fuzz: deps
 	$(MAKE) build
 	python3 tests/fuzz/run_fuzz.py --bin $(BIN) --source $(CURDIR) --jobs $(JOBS)
+
+# The MPI solver beside the one-process build; `make test BUILD=build-mpi` runs the suite
+# there, with the mpi.* tests on 2 and 4 processes.
+mpi:
+	@LATMPM_MPI=1 bash scripts/install-deps.sh
+	$(MAKE) build BUILD=$(MPI_BUILD) CMAKE_ARGS="-DLATMPM_MPI=ON $(CMAKE_ARGS)"
 
 clean:
 	rm -rf $(BUILD)

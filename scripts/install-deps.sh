@@ -9,6 +9,12 @@ packages=(
   libsuitesparse-dev libopenblas0-pthread libnlopt-dev
   libhypre-dev
 )
+# The solver on MPI (make mpi, docs/cluster.md): OpenMPI's compiler wrappers, headers and
+# mpirun. Rank 0 writes the outputs with the serial HDF5 above, so libhdf5-openmpi-dev is
+# not needed (it installs beside libhdf5-dev without removing it: apt-get install -s).
+if [ "${LATMPM_MPI:-0}" = 1 ]; then
+  packages+=(libopenmpi-dev openmpi-bin)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,38 +1,98 @@
-// The seam where a run spread over several processes will plug in (the MPI issue): what a
-// step needs from the other parts of the domain, and nothing else. The physics never talks
-// to other processes itself; the step calls these three at fixed points:
+// The seam where a run spread over several processes plugs in (the MPI issue, docs/
+// cluster.md): what a step needs from the other parts of the domain, and nothing else. The
+// physics never talks to other processes itself; the step calls these at fixed points:
 //
-//   exchange_halo      after P2G: nodal sums of the blocks this process shares with its
-//                      neighbours added up (mass, momentum, force, constraint markers), so
-//                      the grid update sees whole nodes (Cabana's halo "scatter").
-//   reduce_sum/max/min the step's global sums (energies, speeds for the stable time step,
-//                      reactions of the node update, rigid couplings and contact, body
-//                      centres) over all processes.
-//   migrate_particles  before a sort: particles that left this process's part handed on.
+//   migrate_particles  before a sort: particles that left this process's buckets handed on
+//                      (the sort itself happens on every process at the same step).
+//   share_grid         after the active blocks are set: which nodes this process shares
+//                      with which others, and which blocks' reactions it counts.
+//   exchange_halo      after each colour of a scatter: the shared nodes that this colour's
+//                      buckets added to made whole on every process that holds them, so
+//                      node sums are added in the one-process order (mass, momentum,
+//                      force, constraint markers; Cabana's halo "scatter" in colour steps).
+//   sum_in_order       sums of per-bucket and per-block partial sums (energies, reactions,
+//                      body centres, the record layer) in the one-process order of the
+//                      buckets and blocks, so they too are bit-identical to one process.
+//   reduce_sum/max/min the other global sums and extremes (speeds for the stable time
+//                      step, rigid couplings and contact, carried energies).
 //
-// For one process each does nothing, and a run's results do not depend on it. An MPI domain
-// must keep results bit-identical to one process (sums in a fixed order), as the thread
-// count does now (docs/architecture.md, "The domain seam").
+// For one process each does nothing, and a run's results do not depend on it. The MPI
+// domain (mpi_domain.hpp, a build with -DLATMPM_MPI=ON) keeps the particles' state
+// bit-identical to one process (docs/architecture.md, "The domain seam").
 #pragma once
+#include <cstdint>
+#include <vector>
+
+#include "mpm/particles.hpp"
 #include "mpm/real.hpp"
 
 namespace latmpm::mpm {
 
 class SparseGrid;
-struct Particles;
+class ParticleBuckets;
+struct Settings;
+
+// Column sums of `rows` (`width` values per item, items in the order of their keys) added
+// item by item from zero: how one process adds per-bucket and per-block partial sums.
+inline std::vector<Real> sum_rows(const std::vector<Real>& rows, size_t width) {
+  std::vector<Real> sum(width, Real(0));
+  for (size_t i = 0; i + width <= rows.size(); i += width)
+    for (size_t c = 0; c < width; ++c) sum[c] += rows[i + c];
+  return sum;
+}
+
+// What a process sent to the others since the start (docs/cluster.md's halo volume).
+struct DomainTraffic {
+  uint64_t halo_nodes = 0;      // shared nodes sent in halo exchanges (8 lanes of 8 bytes each)
+  uint64_t halo_bytes = 0;      // their lanes and the shared nodes' coordinates
+  uint64_t migration_bytes = 0;
+  uint64_t particles_sent = 0;  // migrated to another process
+};
 
 class SingleProcessDomain {
  public:
-  void exchange_halo(SparseGrid&) const {}
+  void check_supported(const Settings&, const std::string&) const {}
+  void migrate_particles(Particles&, Real) {}
+  void share_grid(const SparseGrid&, const ParticleBuckets&) {}
+  void exchange_halo(SparseGrid&, int) {}
+  // Blocks whose node sums (reactions) this process counts; nullptr: all of its blocks.
+  const std::vector<uint8_t>* counted_blocks() const { return nullptr; }
   Real reduce_sum(Real local) const { return local; }
   Vec3 reduce_sum(const Vec3& local) const { return local; }
+  // Sums of partial sums in their one-process order: `rows` holds `width` values per item
+  // (a bucket, a grid block) of this process, items in ascending `keys`, each key held by
+  // one process; the column sums over every process's items, added in key order
+  // (sum_rows), the same bits as one process.
+  std::vector<Real> sum_in_order(const std::vector<uint64_t>&, const std::vector<Real>& rows, size_t width) const {
+    return sum_rows(rows, width);
+  }
+  // The same for a sum that one process runs on from item to item across buckets (a sum
+  // over particles in their order): `rows` holds the items of bucket g after those of
+  // bucket g − 1, `counts[g]` of them, the buckets in ascending `keys`.
+  std::vector<Real> sum_in_sequence(const std::vector<uint64_t>&, const std::vector<uint32_t>&,
+                                    const std::vector<Real>& rows, size_t width) const {
+    return sum_rows(rows, width);
+  }
   Real reduce_max(Real local) const { return local; }
   Real reduce_min(Real local) const { return local; }
-  void migrate_particles(Particles&) const {}
+  DomainTraffic traffic() const { return {}; }
   int process_count() const { return 1; }
+  int rank() const { return 0; }
+  // Every process's particles on rank 0 (empty elsewhere), for the outputs.
+  Particles gather_particles(const Particles& local) const { return local; }
 };
 
-// The domain a Simulation runs on; an MPI build will choose another type here.
-using Domain = SingleProcessDomain;
-
 }  // namespace latmpm::mpm
+
+#ifdef LATMPM_WITH_MPI
+namespace latmpm::mpm {
+class MpiDomain;
+using Domain = MpiDomain;
+}  // namespace latmpm::mpm
+#include "mpm/mpi_domain.hpp"
+#else
+namespace latmpm::mpm {
+// The domain a Simulation runs on; the MPI build chooses MpiDomain.
+using Domain = SingleProcessDomain;
+}  // namespace latmpm::mpm
+#endif

@@ -16,8 +16,8 @@ void for_each_block(SparseGrid& grid, Fn&& fn) {
 int constrained_body(const Real* node) { return int(node[lane::constraint]) - 1; }
 }  // namespace
 
-Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
-                                 const std::vector<BodyInfo>& bodies) {
+std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
+                                         const std::vector<BodyInfo>& bodies) {
   const size_t nb = bodies.size();
   // Per block and body partial sums, added in block order afterwards: deterministic.
   std::vector<Vec3> block_force(grid.block_count() * nb, Vec3::Zero());
@@ -67,12 +67,21 @@ Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
       }
     }
   });
-  Reactions out{std::vector<Vec3>(nb, Vec3::Zero()), std::vector<Real>(nb, 0)};
-  for (size_t b = 0; b < grid.block_count(); ++b)
-    for (size_t k = 0; k < nb; ++k) {
-      out.force[k] += block_force[b * nb + k];
-      out.power[k] += block_power[b * nb + k];
-    }
+  std::vector<Real> rows(grid.block_count() * nb * 4);
+  for (size_t i = 0; i < grid.block_count() * nb; ++i) {
+    for (int a = 0; a < 3; ++a) rows[4 * i + size_t(a)] = block_force[i][a];
+    rows[4 * i + 3] = block_power[i];
+  }
+  return rows;
+}
+
+Reactions reactions_from_sums(const std::vector<Real>& sums) {
+  const size_t nb = sums.size() / 4;
+  Reactions out{std::vector<Vec3>(nb), std::vector<Real>(nb)};
+  for (size_t k = 0; k < nb; ++k) {
+    out.force[k] = Vec3(sums[4 * k], sums[4 * k + 1], sums[4 * k + 2]);
+    out.power[k] = sums[4 * k + 3];
+  }
   return out;
 }
 

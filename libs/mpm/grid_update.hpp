@@ -22,8 +22,12 @@ struct Reactions {
 // node of a slipping held face (BodyInfo::hold_slip), the free update less its component
 // along the face normal, with the reaction computed the same way.
 // Before: lanes m, p, f, constraint. After: m, v_new, v_new − v_old, constraint.
-Reactions update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
-                                 const std::vector<BodyInfo>& bodies);
+// Returns the reactions per block, a row of 4 values per body (r_x, r_y, r_z in N, power in
+// W), for the caller to sum in block order (sum_reaction_rows; the domain, domain.hpp).
+std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
+                                         const std::vector<BodyInfo>& bodies);
+// The per-body totals of such sums: force from values 4b..4b+2, power from 4b+3.
+Reactions reactions_from_sums(const std::vector<Real>& sums);
 
 // v = p/m with the boundary conditions applied, from lanes [from, from+3) into
 // [to, to+3) (MUSL's remapped velocity, USF's velocity before the forces).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "mpm/bucket_partition.hpp"
 #include "mpm/deformation.hpp"
 #include "mpm/simd.hpp"
 
@@ -122,7 +123,7 @@ Real RecordLayerForce::operator()(const Simulation& sim) const {
   const SolverState& state = sim.state();
   const Particles& ps = state.particles;
   const auto& runs = state.buckets.runs();
-  Real stress_volume = 0, volume = 0;
+  std::vector<Real> rows;  // per bucket: Σ σ_zz V, Σ V of its record points
   for (const Bucket& b : state.buckets.buckets()) {
     Pack bucket_stress_volume{}, bucket_volume{};
     for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
@@ -153,9 +154,10 @@ Real RecordLayerForce::operator()(const Simulation& sim) const {
     }
     Real bucket_sv = 0, bucket_v = 0;
     for (int q = 0; q < pack_width; ++q) bucket_sv += bucket_stress_volume[q], bucket_v += bucket_volume[q];
-    stress_volume += bucket_sv;
-    volume += bucket_v;
+    rows.insert(rows.end(), {bucket_sv, bucket_v});
   }
+  const auto sums = sim.domain().sum_in_order(bucket_order_keys(state.buckets.buckets()), rows, 2);
+  const Real stress_volume = sums[0], volume = sums[1];
   return volume > 0 ? area_ * stress_volume / volume : 0;
 }
 
@@ -181,14 +183,32 @@ Real AverageStressForce::initial_cross_section(const Simulation& sim, const Vec3
 Real AverageStressForce::operator()(const Simulation& sim) const {
   const Particles& ps = sim.particles();
   const Vec3& a = axis_;
-  Real stress_volume = 0, volume = 0;
-  for (size_t p = 0; p < ps.size(); ++p) {
-    if (!counts(sim, p)) continue;
-    const Real along = a.dot(to_matrix(ps.stress[p]) * a);
-    const Real v = ps.deformation[p].determinant() * ps.volume0[p];
-    stress_volume += along * v;
-    volume += v;
+  // Point by point in the particles' order; with several processes in the one-process
+  // order (bucket by bucket, Domain::sum_in_sequence). Before the first sort (no buckets)
+  // the particles are one run in point order, on every process alike.
+  const auto& buckets = sim.state().buckets.buckets();
+  const bool sorted = !buckets.empty();
+  std::vector<uint64_t> keys;
+  std::vector<uint32_t> items;
+  std::vector<Real> rows;
+  auto add = [&](size_t begin, size_t end) {
+    uint32_t count = 0;
+    for (size_t p = begin; p < end; ++p) {
+      if (!counts(sim, p)) continue;
+      const Real along = a.dot(to_matrix(ps.stress[p]) * a);
+      const Real v = ps.deformation[p].determinant() * ps.volume0[p];
+      rows.insert(rows.end(), {along * v, v});
+      ++count;
+    }
+    items.push_back(count);
+  };
+  if (sorted) {
+    for (const Bucket& b : buckets) keys.push_back(bucket_order_key(b)), add(b.begin, b.end);
+  } else {
+    keys.push_back(0), add(0, ps.size());
   }
+  const auto sums = sim.domain().sum_in_sequence(keys, items, rows, 2);
+  const Real stress_volume = sums[0], volume = sums[1];
   return volume > 0 ? area_ * stress_volume / volume : 0;
 }
 

@@ -51,6 +51,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     bodies_.push_back(b);
   }
   context_ = std::make_unique<StepContext>(settings_, bodies_, rigid_bodies_);
+  context_->domain.check_supported(settings_, where);
   for (const auto& b : bodies_) {
     BodyInfo info;
     info.role = b.role;
@@ -170,6 +171,8 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
 void Simulation::add_rigid_body(const RigidBodySettings& body) {
   const std::string where = "rigid_bodies." + body.name;
   if (state_.diagnostics.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
+  if (context_->domain.process_count() > 1)
+    throw InputError(where, "", "geometric rigid bodies do not run on several MPI processes yet; run on one");
   for (const auto& b : rigid_bodies_)
     if (b.name == body.name) throw InputError(where, "", "is given twice");
   validate(body, "scene");
@@ -300,6 +303,8 @@ void Simulation::finish_step(Real dt, Real stable) {
   }
   for (const auto& observer : observers_) observer(*this, d);
 }
+
+const Domain& Simulation::domain() const { return context_->domain; }
 
 size_t Simulation::active_grid_blocks() const { return state_.grid.block_count(); }
 size_t Simulation::grid_memory_bytes() const {

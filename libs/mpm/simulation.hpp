@@ -21,6 +21,7 @@
 #include "mpm/body.hpp"
 #include "mpm/boundary.hpp"
 #include "mpm/diagnostics.hpp"
+#include "mpm/domain.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
@@ -101,7 +102,9 @@ class Simulation {
   Particles& mutable_particles();
 
   // The state the step works on (solver_state.hpp): particles, grid, boundaries, time.
+  // With several processes (domain.hpp), particles() and state() are this process's part.
   const SolverState& state() const { return state_; }
+  const Domain& domain() const;
 
  private:
   // Single stages of a step for the transfer tests (simulation_test_access.hpp).

@@ -97,7 +97,15 @@ void check_ranges(const std::string& file, const std::string& dataset, const std
 }
 }  // namespace
 
+namespace {
+void check_one_process(const Domain& domain, const std::string& where) {
+  if (domain.process_count() > 1)
+    throw InputError(where, "", "checkpoints of a run on several MPI processes are not written or read yet");
+}
+}  // namespace
+
 void Simulation::save_state(Hdf5File& f, const std::string& g) const {
+  check_one_process(context_->domain, f.path());
   CheckpointWriter out(f, g);
   out.strings("bodies", names_of(bodies_));
   if (!rigid_bodies_.empty()) out.strings("rigid_bodies", names_of(rigid_bodies_));
@@ -132,6 +140,7 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
 }
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {
+  check_one_process(context_->domain, f.path());
   const CheckpointReader in(f, g);
   const size_t n = state_.particles.size();
   if (in.strings("bodies") != names_of(bodies_))

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "mpm/body.hpp"
+#include "mpm/bucket_partition.hpp"
 
 namespace latmpm::mpm {
 
@@ -65,28 +66,27 @@ namespace {
 
 void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient) {
   PassSums local;
+  std::vector<Real> rows;  // per bucket: kinetic, strain, dissipation, gravity power
   for (size_t bi = 0; bi < c.tallies.size(); ++bi) {
     const BucketTally& t = c.tallies[bi];
     if (t.fault != ParticleFault::none) throw_fault(s, c, t.fault, t.fault_particle);
-    local.kinetic += t.kinetic;
-    local.strain += t.strain;
-    local.dissipation += t.dissipation;
-    local.gravity_power += t.gravity_power;
+    rows.insert(rows.end(), {t.kinetic, t.strain, t.dissipation, t.gravity_power});
     local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
     local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
   }
+  const std::vector<Real> sum = c.domain.sum_in_order(bucket_order_keys(s.buckets.buckets()), rows, 4);
   PassSums& sums = c.sums;
   if (velocity) {
-    sums.kinetic = c.domain.reduce_sum(local.kinetic);
+    sums.kinetic = sum[0];
     sums.max_speed_sq = c.domain.reduce_max(local.max_speed_sq);
   }
   if (position) {
-    sums.gravity_power = c.domain.reduce_sum(local.gravity_power);
+    sums.gravity_power = sum[3];
     take_cell_ranges(s, c);
   }
   if (gradient) {
-    sums.strain = c.domain.reduce_sum(local.strain);
-    sums.dissipation = c.domain.reduce_sum(local.dissipation);
+    sums.strain = sum[1];
+    sums.dissipation = sum[2];
     sums.max_wave_speed_sq = c.domain.reduce_max(local.max_wave_speed_sq);
   }
 }
@@ -96,11 +96,19 @@ BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt) {
 }
 
 void update_nodes(SolverState& s, StepContext& c, Real dt) {
-  c.reactions = update_grid_velocities(s.grid, dt, c.settings.gravity, c.body_info);
-  for (size_t b = 0; b < c.reactions.force.size(); ++b) {
-    c.reactions.force[b] = c.domain.reduce_sum(c.reactions.force[b]);
-    c.reactions.power[b] = c.domain.reduce_sum(c.reactions.power[b]);
+  std::vector<Real> rows = update_grid_velocities(s.grid, dt, c.settings.gravity, c.body_info);
+  // Per block, in block order; a block several processes hold counts on one of them.
+  const size_t width = 4 * c.body_info.size();
+  std::vector<uint64_t> keys;
+  const std::vector<uint8_t>* counted = c.domain.counted_blocks();
+  size_t kept = 0;
+  for (size_t b = 0; b < s.grid.block_count(); ++b) {
+    if (counted && !(*counted)[b]) continue;
+    keys.push_back(s.grid.key(b));
+    std::copy_n(rows.begin() + std::ptrdiff_t(b * width), width, rows.begin() + std::ptrdiff_t(kept++ * width));
   }
+  rows.resize(kept * width);
+  c.reactions = reactions_from_sums(c.domain.sum_in_order(keys, rows, width));
   constrain_boundaries(s, c, dt);
 }
 
@@ -155,14 +163,20 @@ Real ddmp_small_mass(const SolverState& s, StepContext& c) {
 }
 
 Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body) {
-  Vec3 mx = Vec3::Zero();
-  Real m = 0;
+  // The body's run in each bucket (one at most), in bucket order.
+  std::vector<uint64_t> keys;
+  std::vector<Real> rows;
   const auto& runs = s.buckets.runs();
-  for (size_t r = 0; r < runs.size(); ++r)
-    if (size_t(runs[r].body) == body) mx += c.run_tallies[r].mass_position, m += c.run_tallies[r].mass;
-  mx = c.domain.reduce_sum(mx);
-  m = c.domain.reduce_sum(m);
-  return m > 0 ? Vec3(mx / m) : Vec3::Zero();
+  for (const Bucket& b : s.buckets.buckets())
+    for (uint32_t r = b.run_begin; r < b.run_end; ++r)
+      if (size_t(runs[r].body) == body) {
+        keys.push_back(bucket_order_key(b));
+        const Vec3& mx = c.run_tallies[r].mass_position;
+        rows.insert(rows.end(), {mx[0], mx[1], mx[2], c.run_tallies[r].mass});
+      }
+  const std::vector<Real> sum = c.domain.sum_in_order(keys, rows, 4);
+  const Real m = sum[3];
+  return m > 0 ? Vec3(Vec3(sum[0], sum[1], sum[2]) / m) : Vec3::Zero();
 }
 
 Real energy_density(const SolverState& s, const StepContext& c, size_t p) {

@@ -4,8 +4,8 @@
 // at the end of this file order the stages; the stages themselves live in transfer.hpp
 // (particles ↔ grid, per bucket) and grid_update.cpp (nodes). Not installed for users:
 // simulation.hpp is the interface. The domain (domain.hpp) is called where a run spread
-// over processes needs it: migrate before a sort, halo exchange after every scatter,
-// reductions of every sum the step makes over particles or nodes.
+// over processes needs it: migrate before a sort, halo exchange after every colour of a
+// scatter, reductions of every sum the step makes over particles or nodes.
 #pragma once
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -131,8 +131,10 @@ Real stable_time_step(const SolverState& s, const StepContext& c);
 
 template <class Shape>
 void prepare_grid(SolverState& s, StepContext& c) {
+  // A sort on any process is a sort on all: the buckets stay those of one process.
+  s.needs_sort = c.domain.reduce_max(s.needs_sort ? 1 : 0) > 0;
   if (s.needs_sort) {
-    c.domain.migrate_particles(s.particles);
+    c.domain.migrate_particles(s.particles, c.settings.cell_size);
     s.buckets.sort(s.particles, c.settings.cell_size);
     compute_boxes_from_positions(s, c);
     s.needs_sort = false;
@@ -155,6 +157,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   s.grid.set_active_blocks(keys);
+  c.domain.share_grid(s.grid, s.buckets);
   c.tables.resize(list.size());
   for (size_t bi = 0; bi < list.size(); ++bi) {
     const Bucket& b = list[bi];
@@ -179,7 +182,8 @@ void scatter(SolverState& s, StepContext& c) {
   if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
   if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
-  for (const auto& colour : s.buckets.colours()) {
+  for (int ci = 0; ci < 8; ++ci) {
+    const auto& colour = s.buckets.colours()[size_t(ci)];
     // Buckets of one colour are two buckets apart: their boxes never overlap.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, colour.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
       BucketBuffer& buffer = c.buffers.local();
@@ -196,10 +200,10 @@ void scatter(SolverState& s, StepContext& c) {
         if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.tables[colour[k]], buffer, c.ddmp_nodal);
       }
     });
+    c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
   // A pass that marks constraints visits every point, rigid ones too: α is then complete.
   if constexpr (has_grid_smoothed_gradient<Shape>::value && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
-  c.domain.exchange_halo(s.grid);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }

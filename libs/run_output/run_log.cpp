@@ -13,11 +13,14 @@ double now_seconds() {
 }  // namespace
 
 RunLog::RunLog(const std::string& path, bool append)
-    : path_(path), out_(path, append ? std::ios::app : std::ios::trunc), start_(now_seconds()) {
+    : path_(path), start_(now_seconds()) {
+  if (path.empty()) return;  // no file: the lines go nowhere
+  out_.open(path, append ? std::ios::app : std::ios::trunc);
   if (!out_) throw InputError(path, "", "cannot write the log file");
 }
 
 void RunLog::line(const std::string& text) {
+  if (path_.empty()) return;
   char stamp[32];
   std::snprintf(stamp, sizeof stamp, "[%8.1fs] ", now_seconds() - start_);
   out_ << stamp << text << std::endl;

@@ -9,7 +9,9 @@ namespace latmpm {
 
 class RunLog {
  public:
-  explicit RunLog(const std::string& path, bool append = false);  // creates (truncates) the file, or appends
+  // Creates (truncates) the file, or appends; an empty path writes nothing (the MPI
+  // processes other than rank 0).
+  explicit RunLog(const std::string& path, bool append = false);
   // "[  12.3s] text": seconds since the log was opened.
   void line(const std::string& text);
   const std::string& path() const { return path_; }

@@ -36,6 +36,22 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// How the processes shared the run (docs/cluster.md): particles per process now, and the
+// halo and migration bytes a process sent per step (mean over the processes). Collective.
+std::string domain_summary(const mpm::Simulation& sim, int64_t first_step) {
+  const auto& domain = sim.domain();
+  const double local = double(sim.particles().size()), steps = double(std::max<int64_t>(sim.step_count() - first_step, 1));
+  const double fewest = domain.reduce_min(local), most = domain.reduce_max(local);
+  const auto traffic = domain.traffic();
+  const double processes = domain.process_count();
+  const double halo = domain.reduce_sum(double(traffic.halo_bytes)) / processes / steps;
+  const double nodes = domain.reduce_sum(double(traffic.halo_nodes)) / processes / steps;
+  const double migration = domain.reduce_sum(double(traffic.migration_bytes)) / processes / steps;
+  return "processes: " + format_number("%.0f", fewest) + " to " + format_number("%.0f", most) +
+         " particles each; per process and step " + format_number("%.4g", nodes) + " halo nodes sent, " +
+         format_number("%.4g", halo) + " halo bytes, " + format_number("%.4g", migration) + " migration bytes";
+}
+
 }  // namespace
 
 SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& options)
@@ -70,18 +86,26 @@ SolveRun::SolveRun(Scene scene, Provenance provenance, const SolveOptions& optio
 
 SolveRun::~SolveRun() = default;
 
+bool SolveRun::writes_output() const { return simulation_->domain().rank() == 0; }
+
 SolveSummary SolveRun::run(const std::string& run_dir) {
   const InterruptionDeferral stop_between_steps;  // a signal stops the run after its step, saved
+  mpm::Simulation& sim = *simulation_;
+  // On several MPI processes (docs/cluster.md) every process steps and takes part in the
+  // outputs' sums and gathers; rank 0 alone writes the run directory.
+  const bool writer = writes_output();
+  const bool several = sim.domain().process_count() > 1;
   std::error_code ec;
-  fs::create_directories(run_dir, ec);
-  if (ec || !fs::is_directory(run_dir))
-    throw InputError(run_dir, "", "cannot create the run directory" + (ec ? ": " + ec.message() : ""));
-  // Staging files of a run killed outright (SIGKILL) while it saved.
-  for (const std::string& dir : {run_dir, run_dir + "/snapshots"}) remove_stale_temporaries(dir);
+  if (writer) {
+    fs::create_directories(run_dir, ec);
+    if (ec || !fs::is_directory(run_dir))
+      throw InputError(run_dir, "", "cannot create the run directory" + (ec ? ": " + ec.message() : ""));
+    // Staging files of a run killed outright (SIGKILL) while it saved.
+    for (const std::string& dir : {run_dir, run_dir + "/snapshots"}) remove_stale_temporaries(dir);
+  }
 
   // 1. What is run: the resolved scene and the head of the log. A resumed run first takes
   //    the state of its checkpoint.
-  mpm::Simulation& sim = *simulation_;
   const std::string checkpoint_path = run_dir + "/checkpoint.h5";
   std::vector<XdmfFrame> kept_frames;
   double wall_before = 0;
@@ -109,17 +133,19 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       before.cpu_seconds = output.attribute("cpu_seconds", non_negative);
       before.wall_seconds = output.attribute("process_wall_seconds", non_negative);
     }
-  } else {
+  } else if (writer) {
     // A checkpoint left by an earlier run in this directory is not this run's state: resuming
     // from it after this run is stopped would splice two runs together.
     fs::remove(checkpoint_path, ec);
     if (ec) throw InputError(checkpoint_path, "", "cannot remove the earlier run's checkpoint: " + ec.message());
   }
-  write_file_atomically(run_dir + "/scene.toml",
+  if (writer)
+    write_file_atomically(run_dir + "/scene.toml",
                         "# Resolved scene written by " + provenance_.tool + " " + provenance_.version +
                             "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml,
                         run_dir + "/scene.toml");
-  RunLog log(run_dir + "/log.txt", options_.resume);
+  RunLog log(writer ? run_dir + "/log.txt" : "", options_.resume);
+  if (several) log.line("processes: " + std::to_string(sim.domain().process_count()) + " (MPI), rank 0 writes");
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
              format_number("%.9g", sim.time()) + " s (" + format_number("%.1f", wall_before) + " s of wall time before)");
@@ -163,20 +189,42 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       if (c >= header.size() || header[c] != columns[c].header())
         throw InputError(run_dir + "/series.csv", columns[c].header(), "the series does not match the scene's columns");
   }
-  SeriesWriter series(run_dir + "/series.csv", run_dir + "/series.h5", columns, provenance_, earlier_rows);
-  std::unique_ptr<SnapshotWriter> snapshot_writer =
-      options_.resume ? std::make_unique<SnapshotWriter>(run_dir, provenance_, kept_frames)
-                      : std::make_unique<SnapshotWriter>(run_dir, provenance_);
-  SnapshotWriter& snapshots = *snapshot_writer;
-  if (!options_.resume) {
-    series.append(series_row.row(sim, sim.last_diagnostics()));
-    snapshots.write(solver_snapshot(sim));
+  std::unique_ptr<SeriesWriter> series_writer;
+  std::unique_ptr<SnapshotWriter> snapshot_writer;
+  if (writer) {
+    series_writer = std::make_unique<SeriesWriter>(run_dir + "/series.csv", run_dir + "/series.h5", columns, provenance_,
+                                                   earlier_rows);
+    snapshot_writer = options_.resume ? std::make_unique<SnapshotWriter>(run_dir, provenance_, kept_frames)
+                                      : std::make_unique<SnapshotWriter>(run_dir, provenance_);
   }
-  series.save();
+  // A row and a snapshot are taken on every process (their sums and the gather of the
+  // particles are collective) and written by the writer.
+  auto append_row = [&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
+    const auto row = series_row.row(s, d);
+    if (series_writer) series_writer->append(row);
+  };
+  auto save_series = [&] {
+    if (series_writer) series_writer->save();
+  };
+  auto write_snapshot = [&](const mpm::Simulation& s) {
+    const ParticleSnapshot snapshot = several ? solver_snapshot(s, s.domain().gather_particles(s.particles()))
+                                              : solver_snapshot(s);
+    if (snapshot_writer) snapshot_writer->write(snapshot);
+  };
+  if (!options_.resume) {
+    append_row(sim, sim.last_diagnostics());
+    write_snapshot(sim);
+  }
+  save_series();
 
   // Checkpoints: the solver state and what the outputs need to continue.
   double last_checkpoint = 0;
   auto save_checkpoint = [&](double wall) {
+    if (several) {  // not yet (docs/cluster.md)
+      log.line("no checkpoint: runs on several MPI processes write none yet");
+      return;
+    }
+    SnapshotWriter& snapshots = *snapshot_writer;
     OutputFile out(checkpoint_path, checkpoint_path);
     {
       Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
@@ -206,7 +254,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   };
 
   const double time_at_start = sim.time();  // a resumed run starts part-way: its rate is this part's
-  Progress progress(provenance_.tool, end, options_.progress, 2.0, time_at_start);
+  Progress progress(provenance_.tool, end, options_.progress && writer, 2.0, time_at_start);
   const auto start = std::chrono::steady_clock::now();
   double last_log = 0;
   int64_t last_row_step = earlier_rows.empty() ? 0 : int64_t(earlier_rows.back()[0]);
@@ -228,7 +276,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     o.updates_per_second = rate();
     return o;
   };
-  write_run_status(run_dir, outcome("running", -1, ""), provenance_);
+  if (writer) write_run_status(run_dir, outcome("running", -1, ""), provenance_);
   auto status_text = [&] {
     return "step " + std::to_string(sim.step_count()) + ", t = " + format_number("%.4g", sim.time()) + " s, " +
            format_number("%.3g", rate()) + " particle-updates/s";
@@ -237,13 +285,13 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   // progress, checkpoint and log.
   sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
     if (d.step % scene_.series_every != 0) return;
-    series.append(series_row.row(s, d));
+    append_row(s, d);
     last_row_step = d.step;
   });
   sim.add_observer([&](const mpm::Simulation& s, const mpm::StepDiagnostics& d) {
     if (!(scene_.snapshot_every > 0 && d.step % scene_.snapshot_every == 0)) return;
-    snapshots.write(solver_snapshot(s));
-    series.save();
+    write_snapshot(s);
+    save_series();
     last_snapshot_step = d.step;
   });
   sim.add_observer([&](const mpm::Simulation&, const mpm::StepDiagnostics& d) {
@@ -266,9 +314,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   result.particles = particles;
   try {
     while (sim.time() < end * (1 - 1e-12)) {
-      if (interruption_signal()) {
+      // A signal reaches the processes at different times: all stop after the same step.
+      const int signal = int(sim.domain().reduce_max(interruption_signal()));
+      if (signal) {
         result.status = "interrupted";
-        result.signal = interruption_signal();
+        result.signal = signal;
         log.line(std::string("stopped by ") + signal_name(result.signal) + " after step " +
                  std::to_string(sim.step_count()) + ": checkpoint saved, --resume continues");
         save_checkpoint(seconds_since(start));
@@ -290,26 +340,30 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const std::string reason = std::string(numerical ? "numerical failure: " : "error: ") + e.what();
     log.line("stopped: " + reason);
     try {
-      series.save();
+      save_series();
       // Apart from the time series: the failure may have struck mid-step, so this state
-      // need not be the whole state of any step.
-      log.line("state when the failure was detected (" + std::to_string(sim.step_count()) +
-               " steps completed): " + snapshots.write_separate(solver_snapshot(sim), "failure") +
-               ", failure.xmf");
+      // need not be the whole state of any step. (With several processes the others may
+      // not be in step with this one: no gather, no failure state yet.)
+      if (snapshot_writer && !several)
+        log.line("state when the failure was detected (" + std::to_string(sim.step_count()) +
+                 " steps completed): " + snapshot_writer->write_separate(solver_snapshot(sim), "failure") +
+                 ", failure.xmf");
     } catch (const std::exception& save_error) {
       log.line(std::string("could not save the state: ") + save_error.what());
     }
     log.line("status: failed steps=" + std::to_string(sim.step_count()) + " time=" +
              format_number("%.9g", sim.time()) + " wall_s=" + format_number("%.3f", seconds_since(start)));
-    write_run_status(run_dir, outcome(numerical ? "failed" : "error", numerical ? exit_numerical : exit_internal, reason),
-                     provenance_);
+    if (writer)
+      write_run_status(run_dir, outcome(numerical ? "failed" : "error", numerical ? exit_numerical : exit_internal, reason),
+                       provenance_);
     throw;
   }
 
   // 4. The final state, then the summary.
-  if (last_row_step != sim.step_count()) series.append(series_row.row(sim, sim.last_diagnostics()));
-  if (last_snapshot_step != sim.step_count()) snapshots.write(solver_snapshot(sim));
-  series.save();
+  if (several) log.line(domain_summary(sim, first_step));
+  if (last_row_step != sim.step_count()) append_row(sim, sim.last_diagnostics());
+  if (last_snapshot_step != sim.step_count()) write_snapshot(sim);
+  save_series();
   result.steps = sim.step_count();
   result.simulated_time = sim.time();
   result.wall_seconds = seconds_since(start);
@@ -321,8 +375,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   const std::string reason = result.status == "max_steps" ? "run.max_steps reached"
                              : result.signal           ? std::string("stopped by ") + signal_name(result.signal)
                                                        : "";
-  write_run_status(run_dir, outcome(result.status, result.signal ? exit_signal_base + result.signal : exit_ok, reason),
-                   provenance_);
+  if (writer)
+    write_run_status(run_dir, outcome(result.status, result.signal ? exit_signal_base + result.signal : exit_ok, reason),
+                     provenance_);
   return result;
 }
 

@@ -53,6 +53,8 @@ class SolveRun {
   ~SolveRun();
   SolveSummary run(const std::string& run_dir);
   const mpm::Simulation& simulation() const { return *simulation_; }
+  // False on the MPI processes other than rank 0, which write nothing (docs/cluster.md).
+  bool writes_output() const;
 
  private:
   Scene scene_;

@@ -87,8 +87,9 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
   return row;
 }
 
-ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) {
-  const mpm::Particles& p = sim.particles();
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) { return solver_snapshot(sim, sim.particles()); }
+
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& p) {
   const size_t n = p.size();
   ParticleSnapshot s;
   s.step = sim.step_count();

@@ -52,5 +52,7 @@ class SolverSeries {
 
 // The particles in their original point order (the solver re-sorts them), SI.
 ParticleSnapshot solver_snapshot(const mpm::Simulation& sim);
+// The same of `particles` (all processes' particles, gathered; mpm/domain.hpp) at sim's step.
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& particles);
 
 }  // namespace latmpm

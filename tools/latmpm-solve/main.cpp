@@ -14,6 +14,9 @@
 #include "run_output/solve_run.hpp"
 #include "scene/scene.hpp"
 #include "static_run/static_solve_run.hpp"
+#ifdef LATMPM_WITH_MPI
+#include "mpm/mpi_domain.hpp"
+#endif
 
 namespace {
 
@@ -133,6 +136,7 @@ int solve(int argc, char** argv) {
 
     // 3. The run.
     s = run.run(run_dir);
+    if (!run.writes_output()) return exit_ok;  // rank 0 reports
   } catch (const InputError& e) {
     // Nothing else is written on bad input; a run directory that exists says why its run
     // did not happen (a pipeline reads status.toml, not stderr).
@@ -153,4 +157,12 @@ int solve(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) { return latmpm::run_tool("latmpm-solve", argc, argv, solve); }
+int main(int argc, char** argv) {
+#ifdef LATMPM_WITH_MPI
+  // `mpirun -np N latmpm-solve ...` (docs/cluster.md); a non-zero status stops every process.
+  latmpm::mpm::MpiSession mpi(argc, argv);
+  return mpi.finish(latmpm::run_tool("latmpm-solve", argc, argv, solve));
+#else
+  return latmpm::run_tool("latmpm-solve", argc, argv, solve);
+#endif
+}

@@ -1,0 +1,103 @@
+// The domain of a run on several MPI processes (domain.hpp's seam; docs/cluster.md). Each
+// process holds whole particle buckets, a contiguous piece of their Morton curve weighted by
+// particle count (bucket_partition.hpp), and the grid blocks its buckets' stencils reach.
+// Nodes reached from buckets of several processes are kept whole on each of them by the
+// halo exchange after every colour of a scatter: the one-process scatter adds bucket
+// buffers colour by colour, so the process whose bucket of that colour touches a shared
+// node sends the node's new lanes to the others, which take them as they are. The node sums
+// are thus added in the one-process order, and the particles' state stays bit-identical
+// to one process for any process count. Partial sums per bucket and per block are summed
+// in the one-process order of their keys (sum_in_order), the other sums in rank order:
+// the same bits on every process, so every process takes the same time step.
+//
+// Before the first sort every process holds every particle (each built the Simulation from
+// the whole scene): reductions then return the local value, which is the global one, and
+// the first migration keeps only the process's own buckets.
+//
+// Calls MPI from the thread that runs the step, never from two threads at once
+// (MPI_THREAD_SERIALIZED, which MpiSession asks for: tbb::task_arena::execute may run the
+// step on a worker thread).
+// Without MPI initialised (a test program of the MPI build), it is one process.
+#pragma once
+#include <mpi.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mpm/bucket_partition.hpp"
+#include "mpm/domain.hpp"
+#include "mpm/particles.hpp"
+#include "mpm/real.hpp"
+
+namespace latmpm::mpm {
+
+class SparseGrid;
+class ParticleBuckets;
+struct Settings;
+
+// MPI for the life of a program: MPI_Init_thread (serialized) at construction, MPI_Finalize
+// at finish(0), MPI_Abort for a non-zero exit status so that no process waits for one that
+// has stopped. Runs with `mpirun -np N program ...`; a single process without mpirun too.
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int finish(int exit_status);
+  int rank() const { return rank_; }
+
+ private:
+  int rank_ = 0;
+  bool finished_ = false;
+};
+
+class MpiDomain {
+ public:
+  // On `communicator` (MPI_COMM_WORLD unless MpiDomain::default_communicator was set).
+  MpiDomain();
+  explicit MpiDomain(MPI_Comm communicator);
+
+  // InputError for what does not run on several processes yet (DDMP's node passes reach
+  // beyond a node; geometric rigid bodies sum over nodes in their own order).
+  void check_supported(const Settings& settings, const std::string& where) const;
+  void migrate_particles(Particles& particles, Real cell_size);
+  void share_grid(const SparseGrid& grid, const ParticleBuckets& buckets);
+  void exchange_halo(SparseGrid& grid, int colour);
+  const std::vector<uint8_t>* counted_blocks() const { return distributed() ? &counted_ : nullptr; }
+  Real reduce_sum(Real local) const;
+  Vec3 reduce_sum(const Vec3& local) const;
+  std::vector<Real> sum_in_order(const std::vector<uint64_t>& keys, const std::vector<Real>& rows, size_t width) const;
+  std::vector<Real> sum_in_sequence(const std::vector<uint64_t>& keys, const std::vector<uint32_t>& counts,
+                                    const std::vector<Real>& rows, size_t width) const;
+  Real reduce_max(Real local) const;
+  Real reduce_min(Real local) const;
+  int process_count() const { return size_; }
+  int rank() const { return rank_; }
+  Particles gather_particles(const Particles& local) const;
+
+  const BucketPartition& partition() const { return partition_; }
+  const DomainTraffic& traffic() const { return traffic_; }
+  // For tests: the communicator of domains made from now on (MPI_COMM_WORLD by default).
+  static void set_default_communicator(MPI_Comm communicator);
+
+ private:
+  bool distributed() const { return size_ > 1 && distributed_; }
+  void repartition(const Particles& particles, Real inv_h);
+  std::vector<Real> gather_in_rank_order(const Real* local, int count) const;
+
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0, size_ = 1;
+  bool distributed_ = false;  // false until the first migration: every process holds every particle
+  BucketPartition partition_;
+  // Halo lists of the current grid, per colour and other process: offsets (Reals) of the
+  // first lane of each node in the grid's storage, in the order both sides agree on.
+  std::array<std::vector<std::vector<size_t>>, 8> send_nodes_, receive_nodes_;
+  std::vector<uint8_t> counted_;  // per active block: no lower rank holds it
+  std::vector<Real> send_buffer_, receive_buffer_;
+  DomainTraffic traffic_;
+};
+
+}  // namespace latmpm::mpm
