@@ -260,10 +260,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   int64_t last_row_step = earlier_rows.empty() ? 0 : int64_t(earlier_rows.back()[0]);
   int64_t last_snapshot_step = kept_frames.empty() ? 0 : kept_frames.back().step;
   const int64_t first_step = sim.step_count();  // a resumed run starts later
-  auto rate = [&] {
-    const double wall = seconds_since(start);
+  // Particle-updates per second of this part's stepping over `wall` seconds of it.
+  auto rate_over = [&](double wall) {
     return wall > 0 ? double(particles) * double(sim.step_count() - first_step) / wall : 0.0;
   };
+  auto rate = [&] { return rate_over(seconds_since(start)); };
   // status.toml: "running" now, how the run ended at the end (run_status.hpp).
   auto outcome = [&](const std::string& status, int exit_status, const std::string& reason) {
     RunOutcome o = outcome_without_run(status, exit_status, reason);
@@ -272,8 +273,10 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     o.points = particles;
     o.wall_seconds += before.wall_seconds;
     o.cpu_seconds += before.cpu_seconds;
-    o.stepping_wall_seconds = wall_before + seconds_since(start);
-    o.updates_per_second = rate();
+    // One clock reading for both, so that status.toml's rate is exactly its steps over its time.
+    const double wall = seconds_since(start);
+    o.stepping_wall_seconds = wall_before + wall;
+    o.updates_per_second = rate_over(wall);
     return o;
   };
   if (writer) write_run_status(run_dir, outcome("running", -1, ""), provenance_);
