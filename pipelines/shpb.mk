@@ -46,7 +46,7 @@ $(SH_OUT)/b%.h5: | $(BIN)/latmpm-hexmesh
 	@mkdir -p $(@D)
 	$(BIN)/latmpm-hexmesh --cylinder --diameter 4mm --height 4mm --level $* --cell 0.4mm -o $@
 
-$(eval $(call pipeline_post,$(SH_OUT)/friction,$(call pipeline_label_runs,$(SH_OUT),$(SH_FRICTION)),--kind compression --load load_driven --reference $(firstword $(filter mu0.1-%,$(foreach r,$(SH_FRICTION),$(call pipeline_field,$r,1)))),SHPB specimen: friction study (paper B Sec. 3.4),$(SH_SRC)/notes.md))
+$(eval $(call pipeline_post,$(SH_OUT)/friction,$(call pipeline_label_runs,$(SH_OUT),$(SH_FRICTION)),--kind compression --load load_driven --reference $(SH_FORCES_RUN),SHPB specimen: friction study (paper B Sec. 3.4),$(SH_SRC)/notes.md))
 $(eval $(call pipeline_post,$(SH_OUT)/meshes,$(call pipeline_label_runs,$(SH_OUT),$(SH_MESHES)),--kind compression --load load_driven --reference $(SH_MESH_REF),SHPB specimen: CPDI meshes on G4 (paper B Sec. 3.4),$(SH_SRC)/notes.md))
 $(eval $(call pipeline_post,$(SH_OUT)/grids,$(call pipeline_label_runs,$(SH_OUT),$(SH_GRIDS)),--kind compression --load load_driven --reference $(SH_GRID_REF),SHPB specimen: grids on $(SH_GRID_MESH) (paper B Sec. 3.4),$(SH_SRC)/notes.md))
 

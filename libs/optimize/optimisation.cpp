@@ -55,8 +55,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
   std::vector<size_t> keep;  // loaded points stay simulated
   for (const auto& points : loaded_points(grid, load_case)) keep.insert(keep.end(), points.begin(), points.end());
   const std::vector<size_t> anchors = clamp_anchors(grid, load_case);
-  SimpMaterial material = settings.material;
-  material.weak_ratio = settings.band.enabled ? 0 : 1e-9;
+  const SimpMaterial& material = settings.material;
 
   OptimisationResult result;
   Real best_compliance = std::numeric_limits<Real>::infinity();
@@ -78,18 +77,19 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     // domain with the weak material (E_min = 1e-9 E, the band's threshold reported as 0).
     bool band = settings.band.enabled;
     bool linear_fallback = false;
+    auto lower_threshold = [&] { threshold = std::max(settings.band.start, threshold - 0.05); };
     for (bool solved = false; !solved;) {
       bool joined = true;
       if (band) mask = narrow_band_mask(grid, rho, threshold, keep, anchors, &joined);
       else mask.assign(n, 1);
       const bool lowest = threshold <= settings.band.start;
       if (band && !joined && !lowest) {
-        threshold = std::max(settings.band.start, threshold - 0.05);
+        lower_threshold();
         continue;
       }
       for (size_t q = 0; q < n; ++q) masked[q] = mask[q] ? rho[q] : 0;
       SimpMaterial m = material;
-      if (!band) m.weak_ratio = 1e-9;
+      m.weak_ratio = band ? 0 : 1e-9;  // the band's outside is not simulated; without it, weak
       if (linear_fallback) m.model = mpm::MaterialKind::linear_elastic;
       try {
         c = evaluate_compliance(grid, masked, mask, load_case, m);
@@ -105,7 +105,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
         }
         if (!band) throw;
         if (lowest) band = false, threshold = 0;
-        else threshold = std::max(settings.band.start, threshold - 0.05);
+        else lower_threshold();
       }
     }
     const Real v = volume_fraction(grid, masked);

@@ -145,7 +145,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
                             "\n# " + provenance_.command_line + "\n" + scene_.resolved_toml,
                         run_dir + "/scene.toml");
   RunLog log(writer ? run_dir + "/log.txt" : "", options_.resume);
-  if (several) log.line("processes: " + std::to_string(sim.domain().process_count()) + " (MPI), rank 0 writes");
+  if (several)
+    log.line("processes: " + std::to_string(sim.domain().process_count()) +
+             " (MPI), rank 0 writes; no checkpoints yet on several processes (docs/cluster.md)");
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
              format_number("%.9g", sim.time()) + " s (" + format_number("%.1f", wall_before) + " s of wall time before)");
@@ -220,10 +222,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   // Checkpoints: the solver state and what the outputs need to continue.
   double last_checkpoint = 0;
   auto save_checkpoint = [&](double wall) {
-    if (several) {  // not yet (docs/cluster.md)
-      log.line("no checkpoint: runs on several MPI processes write none yet");
-      return;
-    }
+    if (several) return;  // not yet (docs/cluster.md); said once in the log's "processes:" line
     SnapshotWriter& snapshots = *snapshot_writer;
     OutputFile out(checkpoint_path, checkpoint_path);
     {
@@ -323,7 +322,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
         result.status = "interrupted";
         result.signal = signal;
         log.line(std::string("stopped by ") + signal_name(result.signal) + " after step " +
-                 std::to_string(sim.step_count()) + ": checkpoint saved, --resume continues");
+                 std::to_string(sim.step_count()) +
+                 (several ? ": no checkpoint on several processes" : ": checkpoint saved, --resume continues"));
         save_checkpoint(seconds_since(start));
         break;
       }

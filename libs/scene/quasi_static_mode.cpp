@@ -5,13 +5,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpm/material.hpp"
 #include "scene/scene.hpp"
 
 namespace latmpm {
 namespace {
-
-// P-wave modulus E (1 − ν) / ((1 + ν)(1 − 2ν)), Pa.
-double p_wave_modulus(double E, double nu) { return E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)); }
 
 // Measured (docs/tradeoff.md, "Quasi-static mode"): QUICK T2P30-E10, uGIMP, rigid plates with
 // the one-cell slice, cfl 0.3, 100 mm/s, mass scaling 1.5 / 6 / 9 / 12 / 24 (ratio √(s / 6)):
@@ -23,7 +21,12 @@ constexpr std::array<Point, 5> measured = {{{0.5, 0.0}, {1.0, 0.0279}, {1.2247, 
 
 }  // namespace
 
-double paper_a_mach() { return 0.1 / std::sqrt(p_wave_modulus(10e6, 0.4) / (6 * 1050.0)); }
+double paper_a_mach() {
+  mpm::MaterialParameters paper_a;  // E = 10 MPa, ν = 0.4, ρ = 6 × 1050 kg/m³, plate at 100 mm/s
+  paper_a.young_modulus = 10e6;
+  paper_a.poisson_ratio = 0.4;
+  return 0.1 / std::sqrt(paper_a.p_wave_modulus() / (6 * 1050.0));
+}
 
 double quasi_static_load_error(double ratio) {
   if (ratio <= measured.front().ratio) return 0;
@@ -56,8 +59,7 @@ QuasiStaticChoice choose_quasi_static(const Scene& scene, double bound) {
   double c0 = 0;
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::deformable)
-      c0 = std::max(c0, std::sqrt(p_wave_modulus(b.material.young_modulus, b.material.poisson_ratio) /
-                                  b.material.density));
+      c0 = std::max(c0, std::sqrt(b.material.p_wave_modulus() / b.material.density));
   QuasiStaticChoice c;
   c.mach_ratio = quasi_static_mach_ratio(bound);
   c.mach = c.mach_ratio * paper_a_mach();
