@@ -19,9 +19,14 @@ int constrained_body(const Real* node) { return int(node[lane::constraint]) - 1;
 std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
                                          const std::vector<BodyInfo>& bodies) {
   const size_t nb = bodies.size();
-  // Per block and body partial sums, added in block order afterwards: deterministic.
-  std::vector<Vec3> block_force(grid.block_count() * nb, Vec3::Zero());
-  std::vector<Real> block_power(grid.block_count() * nb, 0);
+  // Per block and body partial sums (force x, y, z and power), added in block order
+  // afterwards: deterministic.
+  std::vector<Real> rows(grid.block_count() * nb * 4, 0);
+  auto add_force = [&](size_t b, int body, const Vec3& r) {
+    Real* row = rows.data() + 4 * (b * nb + size_t(body));
+    for (int a = 0; a < 3; ++a) row[a] += r[a];
+  };
+  auto add_power = [&](size_t b, int body, Real power) { rows[4 * (b * nb + size_t(body)) + 3] += power; };
   const Real inv_dt = 1 / dt;
   for_each_block(grid, [&](size_t b, Real* block) {
     for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
@@ -36,8 +41,8 @@ std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& 
         if (body >= 0 && !bodies[size_t(body)].hold_slip) {
           v = bodies[size_t(body)].velocity;
           const Vec3 r = -Vec3(node[4], node[5], node[6]);
-          block_force[b * nb + size_t(body)] += r;
-          block_power[b * nb + size_t(body)] += r.dot(v);
+          add_force(b, body, r);
+          add_power(b, body, r.dot(v));
         }
         for (int c = 0; c < 3; ++c) node[lane::momentum + c] = v[c], node[lane::force + c] = 0;
         continue;
@@ -52,12 +57,12 @@ std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& 
         v_new = v_old + dt / m * f;
         v_new -= v_new.dot(normal) * normal;
         const Vec3 r = (m * v_new - p) * inv_dt - f;
-        block_force[b * nb + size_t(body)] += r;
+        add_force(b, body, r);
       } else if (body >= 0) {
         v_new = bodies[size_t(body)].velocity;
         const Vec3 r = (m * v_new - p) * inv_dt - f;
-        block_force[b * nb + size_t(body)] += r;
-        block_power[b * nb + size_t(body)] += r.dot(v_new);
+        add_force(b, body, r);
+        add_power(b, body, r.dot(v_new));
       } else {
         v_new = v_old + dt / m * f;
       }
@@ -67,11 +72,6 @@ std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& 
       }
     }
   });
-  std::vector<Real> rows(grid.block_count() * nb * 4);
-  for (size_t i = 0; i < grid.block_count() * nb; ++i) {
-    for (int a = 0; a < 3; ++a) rows[4 * i + size_t(a)] = block_force[i][a];
-    rows[4 * i + 3] = block_power[i];
-  }
   return rows;
 }
 

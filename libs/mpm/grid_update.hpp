@@ -23,7 +23,7 @@ struct Reactions {
 // along the face normal, with the reaction computed the same way.
 // Before: lanes m, p, f, constraint. After: m, v_new, v_new − v_old, constraint.
 // Returns the reactions per block, a row of 4 values per body (r_x, r_y, r_z in N, power in
-// W), for the caller to sum in block order (sum_reaction_rows; the domain, domain.hpp).
+// W), for the caller to sum in block order (Domain::sum_in_order, then reactions_from_sums).
 std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
                                          const std::vector<BodyInfo>& bodies);
 // The per-body totals of such sums: force from values 4b..4b+2, power from 4b+3.

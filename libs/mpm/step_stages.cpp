@@ -100,12 +100,15 @@ void update_nodes(SolverState& s, StepContext& c, Real dt) {
   // Per block, in block order; a block several processes hold counts on one of them.
   const size_t width = 4 * c.body_info.size();
   std::vector<uint64_t> keys;
-  const std::vector<uint8_t>* counted = c.domain.counted_blocks();
+  keys.reserve(s.grid.block_count());
+  const std::vector<uint8_t>* counted = c.domain.counted_blocks();  // null on one process: all count
   size_t kept = 0;
   for (size_t b = 0; b < s.grid.block_count(); ++b) {
     if (counted && !(*counted)[b]) continue;
     keys.push_back(s.grid.key(b));
-    std::copy_n(rows.begin() + std::ptrdiff_t(b * width), width, rows.begin() + std::ptrdiff_t(kept++ * width));
+    if (kept != b)  // rows move down only past a block another process counts
+      std::copy_n(rows.begin() + std::ptrdiff_t(b * width), width, rows.begin() + std::ptrdiff_t(kept * width));
+    ++kept;
   }
   rows.resize(kept * width);
   c.reactions = reactions_from_sums(c.domain.sum_in_order(keys, rows, width));

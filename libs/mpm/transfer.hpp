@@ -108,25 +108,27 @@ inline auto particle_stencil(const Particles& ps, size_t p, Real h, const Bucket
 }
 
 // The lane vectors of particle p's scatter: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz, with
-// a = (m, m v) and f_i = −V σ ∇S_i, V = J V0 the current volume.
+// a = (m, m v) and f_i = −V σ ∇S_i, V = J V0 the current volume (−V kept for DDMP's corners).
 struct ScatterLanes {
   NodeLanes a, fx, fy, fz;
+  Real minus_volume = 0;
 };
 template <class Mode>
 [[gnu::always_inline]] inline ScatterLanes scatter_lanes(const Particles& ps, size_t p) {
   NodeLanes a{}, fx{}, fy{}, fz{};
+  Real v = 0;
   const Real m = ps.mass[p];
   if constexpr (Mode::mass) a[lane::mass] = m;
   if constexpr (Mode::momentum_lane >= 0)
     for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
   if constexpr (Mode::force) {
-    const Real v = -ps.volume0[p] * ps.deformation[p].determinant();
+    v = -ps.volume0[p] * ps.deformation[p].determinant();
     const SymTensor& s = ps.stress[p];
     fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
     fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
     fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
   }
-  return {a, fx, fy, fz};
+  return {a, fx, fy, fz, v};
 }
 
 template <class Shape, class Mode>
@@ -148,8 +150,8 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         const auto& st = stencils[p - p0];
         Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
         if constexpr (uses_domain_vertices<Shape>::value) {  // deformable points only (cpdi_particles.hpp)
-          const auto [a, fx, fy, fz] = scatter_lanes<Mode>(ps, p);
-          scatter_cpdi<Mode::force, BucketBuffer::stride_i, BucketBuffer::stride_j>(st, first, a, fx, fy, fz);
+          const ScatterLanes l = scatter_lanes<Mode>(ps, p);
+          scatter_cpdi<Mode::force, BucketBuffer::stride_i, BucketBuffer::stride_j>(st, first, l.a, l.fx, l.fy, l.fz);
         } else {
         // Rigid points mark every node they touch with their body: those nodes take the body's
         // prescribed velocity (zero unless driven). Held points of a deformable body mark the
@@ -176,7 +178,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                 }
         }
         if (rigid) continue;  // rigid points carry no mass to the grid
-        const auto [a, fx, fy, fz] = scatter_lanes<Mode>(ps, p);
+        const auto [a, fx, fy, fz, minus_volume] = scatter_lanes<Mode>(ps, p);
         // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
         // (with_trip_count; a run-time bound there changed the rounding of the results).
         const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
@@ -201,7 +203,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
           }
         if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-          scatter_ddmp_corner_stress(st, -ps.volume0[p] * ps.deformation[p].determinant(), ps.stress[p], buffer);
+          scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p], buffer);
         } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
           // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
           for (int i = 0; i < N; ++i)
@@ -470,7 +472,8 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               update_material_stress(material, d, s, history);
               const Pack energy = volume0 * material_energy_density(material, d, s, history);
               strain += energy;
-              dissipation += volume0 * material_dissipation_density(material, history);
+              if constexpr (has_dissipation_history<std::decay_t<decltype(material)>>::value)
+                dissipation += volume0 * material_dissipation_density(material, history);
               for (int q = 0; q < n; ++q) {
                 const uint32_t p = g0 + uint32_t(q);
                 const Real J = d.jacobian[q];
