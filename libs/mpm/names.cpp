@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "mpm/body.hpp"
 #include "mpm/material.hpp"
+#include "mpm/name_table.hpp"
 #include "mpm/rigid_body.hpp"
 #include "mpm/settings.hpp"
 #include "mpm/shape_function_kind.hpp"
@@ -16,30 +17,9 @@
 namespace latmpm::mpm {
 
 namespace {
-// A table is an array of rows (enum value, name, ...): std::pair or std::tuple.
-template <class Enum, class Table>
-std::string name_of(Enum value, const Table& names) {
-  for (const auto& row : names)
-    if (std::get<0>(row) == value) return std::get<1>(row);
-  return "?";
-}
-
-template <class Table>
-std::vector<std::string> names_in(const Table& names) {
-  std::vector<std::string> out;
-  for (const auto& row : names) out.emplace_back(std::get<1>(row));
-  return out;
-}
-
-template <class Table>
-auto parse_name(const std::string& text, const Table& names, const std::string& where, const std::string& field) {
-  std::string choices;
-  for (const auto& row : names) {
-    if (text == std::get<1>(row)) return std::get<0>(row);
-    choices += (choices.empty() ? "" : ", ") + std::string(std::get<1>(row));
-  }
-  throw InputError(where, field, "unknown value '" + text + "' (expected one of: " + choices + ")");
-}
+using name_table::name_of;
+using name_table::names_in;
+using name_table::parse_name;
 
 // Name and default CFL number: the largest of 0.3, 0.5, 0.6 ... 1.0 up to which paper A's
 // column (cell 0.4 mm; for uGIMP also the QUICK T2P30 lattice) finished with its load within

@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
+#include "mpm/name_table.hpp"
 #include "statics/cholmod_direct.hpp"
 #include "statics/hypre_amg.hpp"
 
@@ -23,22 +24,12 @@ const std::array<std::pair<LinearSolverKind, const char*>, 5> solver_names{{{Lin
                                                                           {LinearSolverKind::automatic, "auto"}}};
 }
 
-std::string to_string(LinearSolverKind kind) {
-  for (const auto& [k, n] : solver_names)
-    if (k == kind) return n;
-  return "?";
-}
+std::string to_string(LinearSolverKind kind) { return mpm::name_table::name_of(kind, solver_names); }
 
-std::vector<std::string> linear_solver_names() {
-  std::vector<std::string> names;
-  for (const auto& [k, n] : solver_names) names.emplace_back(n);
-  return names;
-}
+std::vector<std::string> linear_solver_names() { return mpm::name_table::names_in(solver_names); }
 
 LinearSolverKind parse_linear_solver(const std::string& name, const std::string& where, const std::string& field) {
-  for (const auto& [k, n] : solver_names)
-    if (name == n) return k;
-  throw InputError(where, field, "unknown value '" + name + "' (expected one of: ldlt, cg, cholmod, amg, auto)");
+  return mpm::name_table::parse_name(name, solver_names, where, field);
 }
 
 struct SparseSolver::Impl {
