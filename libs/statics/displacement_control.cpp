@@ -1,5 +1,7 @@
 #include "statics/displacement_control.hpp"
 
+#include <memory>
+
 #include "core/errors.hpp"
 
 namespace latmpm::statics {
@@ -19,17 +21,20 @@ Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const V
   return load;
 }
 
-// A direct solver for the stability check: CG and AMG cannot tell an indefinite matrix.
-LinearSolverKind direct_kind(LinearSolverKind kind) {
-  return kind == LinearSolverKind::ldlt ? kind : LinearSolverKind::cholmod;
-}
 }  // namespace
 
 PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, SparseSolver& solver,
                           const NewtonOptions& newton, const IncrementObserver& observe) {
   if (loading.increments < 1) throw InputError("static solver", "increments", "must be at least 1");
   PathReport report;
-  SparseSolver check(direct_kind(solver.kind()));
+  // The stability check needs a direct solver (CG and AMG cannot tell an indefinite
+  // matrix): the Newton solver where it is one, else a CHOLMOD of its own, made on first use.
+  std::unique_ptr<SparseSolver> own_check;
+  auto check_solver = [&]() -> SparseSolver& {
+    if (solver.is_direct()) return solver;
+    if (!own_check) own_check = std::make_unique<SparseSolver>(LinearSolverKind::cholmod);
+    return *own_check;
+  };
   Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
 
   // Solves at `travel` from u; true when it converged (u, point updated), false otherwise.
@@ -54,10 +59,11 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.min_jacobian = r.min_jacobian;
     point.stable = true;
     if (loading.check_stability) {
+      PhaseTimer timer(report.stability_check);
       problem.assemble_hessian(state, false);
       SparseMatrix& K = problem.hessian();
       constrain_rows_and_columns(K, conditions.fixed, mean_diagonal(K));
-      point.stable = check.factorize(K);
+      point.stable = check_solver().factorize(K);
     }
     return true;
   };

@@ -6,7 +6,9 @@
 // (unprojected) tangent is factorised: the static path ends at the first increment where it
 // is not positive definite (a bifurcation or limit point: buckling), where the load falls
 // (past a limit point; the only check where the true tangent is unusable, docs/statics.md)
-// or where Newton fails; the travel there is bracketed by bisection.
+// or where Newton fails; the travel there is bracketed by bisection. The check factorises
+// with the Newton solver itself when that is direct (one analysis, one factor in memory:
+// the next Newton step refactorises anyway), else with its own CHOLMOD.
 #pragma once
 #include <functional>
 #include <string>
@@ -48,6 +50,7 @@ struct PathReport {
   Real end_load = 0;              // N: the load there (interpolated), or the last stable load
   Real last_stable_travel = 0;    // m: the last travel found stable
   Real last_stable_load = 0;      // N: the load there
+  PhaseTime stability_check;      // true-tangent assemblies and factorisations after increments
 };
 
 // Called after each converged increment with its point and displacement field.
