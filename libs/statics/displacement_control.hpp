@@ -27,6 +27,9 @@ struct PlatenLoading {
   bool check_stability = true;        // factorise the true tangent after each increment
   bool end_at_load_maximum = true;    // a falling load also ends the path (a limit point)
   int bisections = 6;                 // halvings of the bracket around the instability
+  // Start each increment's Newton from the secant extrapolation of the last two equilibria
+  // (from the last one where that inverts a point or does not converge).
+  bool predictor = true;
 };
 
 struct PathPoint {
@@ -34,7 +37,8 @@ struct PathPoint {
   Real load = 0;            // N: force the platen exerts along its motion
   Real support_load = 0;    // N: force the supports exert against it
   Real energy = 0;          // J: stored elastic energy
-  int newton_iterations = 0;
+  int newton_iterations = 0;  // including any spent from an abandoned prediction
+  bool predicted = false;     // converged from the predictor's start
   int linear_iterations = 0;
   Real linear_residual = 0;  // ‖K d − r‖ / ‖r‖ of the last linear solve
   Real residual = 0;        // final relative residual
