@@ -137,6 +137,8 @@ void read(TableReader& contact, mpm::FieldContactSettings& s) {
   s.enabled = true;
   s.friction = contact.number("friction", s.friction);
   if (!(s.friction >= 0)) contact.fail("friction", "must be zero or positive (a Coulomb coefficient)");
+  s.fill = contact.number("fill", s.fill);
+  if (!(s.fill >= 0 && s.fill <= 1)) contact.fail("fill", "must lie in [0, 1] (a fraction of the node's volume h^3)");
   // Point tags, comma-separated: each tagged part of a body is a field of its own.
   std::string list = contact.text("groups", "");
   s.groups.clear();

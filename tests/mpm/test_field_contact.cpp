@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 
+#include "core/errors.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
 
@@ -224,4 +225,31 @@ TEST_CASE("Two arms of one body sliding along each other stick with one field an
   CHECK(lag[0] < 0.2);
   CHECK(lag[1] < 0.1);
   CHECK(lag[1] < 0.6 * lag[0]);
+}
+
+TEST_CASE("Grid contact refuses what its step does not take, naming the contact key", "[mpm][field_contact]") {
+  PointSet points = empty_point_set(1e-3, 2);
+  add_points(points, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2e-3, 2e-3, 2e-3), "a");
+  const std::vector<BodySettings> bodies{deformable("a", elastic(E, 0.3, rho))};
+  struct Case {
+    ShapeFunctionKind shape;
+    UpdateScheme scheme;
+    std::vector<std::string> groups;
+    std::string field, problem;
+  };
+  auto c = GENERATE(values<Case>({
+      {ShapeFunctionKind::ddmp, UpdateScheme::usl, {}, "contact", "not ddmp"},
+      {ShapeFunctionKind::ugimp, UpdateScheme::musl, {}, "contact", "usl scheme only"},
+      {ShapeFunctionKind::ugimp, UpdateScheme::usl, {"strut"}, "contact.groups", "no tag 'strut'"},
+  }));
+  Settings s = contact_settings(1e-3, true, 0, c.groups);
+  s.shape_function = c.shape;
+  s.scheme = c.scheme;
+  try {
+    Simulation sim(points, bodies, s);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.field() == c.field);
+    CHECK_THAT(e.problem(), Catch::Contains(c.problem));
+  }
 }
