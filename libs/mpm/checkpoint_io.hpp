@@ -23,8 +23,9 @@ class Hdf5File;
 namespace latmpm::mpm {
 
 // 1: positional scalars (before issue 13); 2: named datasets.
-// 3: plastic_dissipation, cpdi_domain; 4: contact_energy, friction_dissipation.
-inline constexpr int64_t checkpoint_format_version = 4;
+// 3: plastic_dissipation, cpdi_domain; 4: contact_energy, friction_dissipation;
+// 5: blend_dissipation.
+inline constexpr int64_t checkpoint_format_version = 5;
 
 // How a value type is stored: its components per row and the dataset element type.
 template <class T>

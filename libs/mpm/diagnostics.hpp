@@ -46,10 +46,10 @@ struct StepDiagnostics {
   // point-defined fixed and driven bodies (zero for a fixed base); gravity_work: gravity's
   // work on the deformable material; rigid_energy: Σ kinetic + potential energy of the free
   // rigid bodies; energy_error: (kinetic + strain + plastic_dissipation + rigid_energy + contact_energy +
-  // friction_dissipation) − their initial value −
-  // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact,
-  // dissipation-free scheme; MPM's grid-to-particle projection and FLIP/PIC blending
-  // dissipate a little, so it drifts negative.
+  // friction_dissipation + blend_dissipation) − their initial value −
+  // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact
+  // scheme; what is left is the transfers' and the time integration's own error (MPM's
+  // grid-to-particle projection dissipates a little, so it drifts negative).
   Real constraint_work = 0;
   Real gravity_work = 0;
   Real rigid_energy = 0;
@@ -58,6 +58,11 @@ struct StepDiagnostics {
   // their own power f·V, so both enter energy_error beside the material's energies.
   Real contact_energy = 0;
   Real friction_dissipation = 0;
+  // Kinetic energy the FLIP/PIC velocity blend (Settings::flip_blend) removed since the start:
+  // Σ over steps and points of ½ m (|v_FLIP|² − |v|²), v_FLIP the pure FLIP update. A
+  // numerical dissipation of the scheme (zero for flip = 1), kept apart from the physical
+  // ones (plastic, friction), J.
+  Real blend_dissipation = 0;
   Real energy_error = 0;
 };
 

@@ -66,18 +66,19 @@ namespace {
 
 void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient) {
   PassSums local;
-  std::vector<Real> rows;  // per bucket: kinetic, strain, dissipation, gravity power
+  std::vector<Real> rows;  // per bucket: kinetic, strain, dissipation, gravity power, blend dissipation
   for (size_t bi = 0; bi < c.tallies.size(); ++bi) {
     const BucketTally& t = c.tallies[bi];
     if (t.fault != ParticleFault::none) throw_fault(s, c, t.fault, t.fault_particle);
-    rows.insert(rows.end(), {t.kinetic, t.strain, t.dissipation, t.gravity_power});
+    rows.insert(rows.end(), {t.kinetic, t.strain, t.dissipation, t.gravity_power, t.blend_dissipation});
     local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
     local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
   }
-  const std::vector<Real> sum = c.domain.sum_in_order(bucket_order_keys(s.buckets.buckets()), rows, 4);
+  const std::vector<Real> sum = c.domain.sum_in_order(bucket_order_keys(s.buckets.buckets()), rows, 5);
   PassSums& sums = c.sums;
   if (velocity) {
     sums.kinetic = sum[0];
+    sums.blend_dissipation = sum[4];
     sums.max_speed_sq = c.domain.reduce_max(local.max_speed_sq);
   }
   if (position) {

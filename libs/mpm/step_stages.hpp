@@ -45,6 +45,7 @@ using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
 // The particle passes' sums (after the domain's reductions).
 struct PassSums {
   Real kinetic = 0, strain = 0, dissipation = 0, gravity_power = 0;
+  Real blend_dissipation = 0;  // of this step's velocity pass (BucketTally)
   Real max_speed_sq = 0, max_wave_speed_sq = 0;
 };
 
@@ -271,29 +272,45 @@ void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
 // --- The contact stage (rigid_contact.hpp) ----------------------------------------------
 
 // The contact forces at the start of the step into the force lanes, f_i += S_ip f_p, point
-// by point in order (deterministic). DDMP's weights are the linear ones (shape_ddmp.hpp),
-// so those points take the linear stencil; so do CPDI1 points, whose contact paper B
-// handles at the material point (Sec. 3.4).
+// by point in order (deterministic), with the weights S_ip that move the point (its G2P
+// interpolation), so that the grid's power Σ f_i·v_i is the points' Σ f_p·v_p. DDMP's
+// weights are the linear ones (shape_ddmp.hpp); CPDI1 points take their domain's averaged
+// functions (Eq. 7). Paper B handles contact at the material point (Sec. 3.4): its position
+// decides the contact, its weights spread the force. (Spread with the linear stencil of the
+// material point instead, the force reached nodes that hold little of a CPDI point's mass,
+// whose kicks put twice the contact's work into the grid: +3 % in the SHPB's energy
+// balance, docs/paper-b.md.)
 template <class Shape>
 void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
-  using Weights =
-      std::conditional_t<Shape::smoothed_gradient || Shape::uses_domain_vertices, LinearShape, Shape>;
-  constexpr int N = Weights::nodes_per_axis;
   const Real h = c.settings.cell_size;
-  for (uint32_t p : c.contact.touching) {
-    const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
-    const Vec3& f = c.contact.force[p];
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        for (int k = 0; k < N; ++k) {
-          const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
-          if (!(w > 0)) continue;
-          // Active: the point's own scatter stencil reaches at least these nodes.
-          Real* lanes = s.grid.node(st.base[0] + i, st.base[1] + j, st.base[2] + k);
-          for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
-        }
+  // Active: the point's own scatter stencil reaches these nodes.
+  auto add = [&](int i, int j, int k, Real w, const Vec3& f) {
+    Real* lanes = s.grid.node(i, j, k);
+    for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
+  };
+  if constexpr (Shape::uses_domain_vertices) {
+    constexpr int N = CpdiBoxStencil::n;
+    for (uint32_t p : c.contact.touching) {
+      const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j)
+          for (int k = 0; k < N; ++k)
+            if (const Real w = st.w[CpdiBoxStencil::index(i, j, k)]; w > 0)
+              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
+    }
+  } else {
+    using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
+    constexpr int N = Weights::nodes_per_axis;
+    for (uint32_t p : c.contact.touching) {
+      const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j)
+          for (int k = 0; k < N; ++k)
+            if (const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2]; w > 0)
+              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
+    }
   }
 }
 

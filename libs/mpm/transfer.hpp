@@ -60,6 +60,9 @@ enum class ParticleFault { none, not_finite, inverted, left_grid };
 struct BucketTally {
   Real kinetic = 0, strain = 0, gravity_power = 0;
   Real dissipation = 0;  // Σ V0 × dissipated energy density (material_history.hpp), J
+  // Kinetic energy the FLIP/PIC blend removed in this pass: Σ ½ m (|v_FLIP|² − |v|²), v_FLIP
+  // = v + Σ S Δv_I the pure FLIP update and v the blended one, J. A numerical dissipation.
+  Real blend_dissipation = 0;
   Real max_speed_sq = 0;  // m²/s²
   Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
@@ -357,7 +360,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   };
 
   // Sums of the bucket, one lane per particle slot of a group, added up at the end.
-  Pack kinetic{}, strain{}, gravity_power{}, dissipation{};
+  Pack kinetic{}, strain{}, gravity_power{}, dissipation{}, blend_dissipation{};
   for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
     const BodyRun& run = runs[run_index - b.run_begin];
     if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
@@ -437,9 +440,15 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             }
             // 2. Update the group's particles together, one per lane.
             if constexpr (Mode::velocity) {
-              for (int a = 0; a < 3; ++a) v[a] = flip * (v[a] + dv[a]) + (1 - flip) * v_grid[a];
+              Pack flip_speed_sq{};
+              for (int a = 0; a < 3; ++a) {
+                const Pack v_flip = v[a] + dv[a];
+                flip_speed_sq += v_flip * v_flip;
+                v[a] = flip * v_flip + (1 - flip) * v_grid[a];
+              }
               const Pack speed_sq = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
               kinetic += Real(0.5) * m * speed_sq;
+              blend_dissipation += Real(0.5) * m * (flip_speed_sq - speed_sq);
               for (int q = 0; q < n; ++q) {
                 ps.velocity[g0 + q] = Vec3(v[0][q], v[1][q], v[2][q]);
                 tally.max_speed_sq = std::max(tally.max_speed_sq, speed_sq[q]);
@@ -501,6 +510,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     tally.kinetic += kinetic[q];
     tally.strain += strain[q];
     tally.dissipation += dissipation[q];
+    tally.blend_dissipation += blend_dissipation[q];
     tally.gravity_power += gravity_power[q];
   }
 }

@@ -21,14 +21,16 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"constraint_work", "J", "work of the fixed and driven point bodies' reactions (zero for a fixed base)"},
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
-       "kinetic + strain + plastic dissipation + flyer energy + contact energy + friction dissipation - initial - "
-       "constraint_work - gravity_work - driven rigid bodies' work"},
+       "kinetic + strain + plastic dissipation + flyer energy + contact energy + friction dissipation + blend "
+       "dissipation - initial - constraint_work - gravity_work - driven rigid bodies' work"},
       {"plastic_dissipation", "J", "plastic work of the J2 points since the start, sum V0 x j2_plastic_work"},
       {"contact_energy", "J", "energy held in the penalty bodies' contact springs, sum |f|^2 / (2 kappa)"},
       {"friction_dissipation", "J", "energy dissipated by the penalty bodies' Coulomb friction since the start"},
       {"load_average", "N",
        "-A0 x current-volume average of the stress along the loading axis over the deformable material, A0 = "
        "V0 / l0 (paper B Eq. 14, f_a), compression positive"},
+      {"blend_dissipation", "J",
+       "kinetic energy the FLIP/PIC velocity blend removed since the start, sum 1/2 m (|v_FLIP|^2 - |v|^2) (numerical)"},
   };
   if (with_flyer) {
     const std::vector<SeriesColumn> flyer = {
@@ -79,7 +81,8 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
                              0.0 - record_(sim),  d.kinetic_energy, d.strain_energy,  // 0 - x: no "-0"
                              d.external_work,  d.max_speed,      d.constraint_work,
                              d.gravity_work,   d.energy_error,   d.plastic_dissipation,
-                             d.contact_energy, d.friction_dissipation, 0.0 - average_(sim)};
+                             d.contact_energy, d.friction_dissipation, 0.0 - average_(sim),
+                             d.blend_dissipation};
   if (flyer)
     row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
                            0.0 + Eigen::Vector3d(flyer->displacement).dot(axis), flyer->kinetic_energy,
