@@ -19,6 +19,7 @@
 #include "mpm/ddmp_grid.hpp"
 #include "mpm/ddmp_small_mass.hpp"
 #include "mpm/domain.hpp"
+#include "mpm/field_contact.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/rigid_contact.hpp"
 #include "mpm/settings.hpp"
@@ -71,6 +72,10 @@ struct StepContext {
   std::vector<ContactMaterial> contact_materials;  // per point body
   ContactForces contact;                           // of the current step, in particle order
   Real contact_rate_sq = 0;                        // largest κ_p/m_p, 1/s²
+  // The grid's velocity fields (field_contact.hpp): one, or one per contact field; then
+  // the field the scatter and gather passes take (−1: every point).
+  GridFields grid_fields;
+  int active_field = -1;
   // The carried speeds and energies must be taken from the particles again (at the start,
   // after mutable_particles() or a rigid body was added).
   bool refresh_needed = true;
@@ -190,6 +195,8 @@ void scatter(SolverState& s, StepContext& c) {
       BucketBuffer& buffer = c.buffers.local();
       for (size_t k = r.begin(); k < r.end(); ++k) {
         const Bucket& b = list[colour[k]];
+        if (c.active_field >= 0 && !bucket_has_field(b, s.buckets.runs(), s.particles, c.active_field)) continue;
+        buffer.field = c.active_field;
         buffer.attach(b);
         buffer.ddmp_alpha = c.ddmp_partition();
         buffer.ddmp_alpha_cache = alpha_cache;
@@ -210,8 +217,9 @@ void scatter(SolverState& s, StepContext& c) {
   }
 }
 
+// The gather's particle passes, their bucket tallies into `tallies` (one per bucket).
 template <class Shape, class Mode>
-void gather(SolverState& s, StepContext& c, Real dt) {
+void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketTally>& tallies) {
   const auto& list = s.buckets.buckets();
   const Settings& st = c.settings;
   const GatherParameters parameters{st.cell_size, dt, st.flip_blend, st.gravity, st.min_jacobian};
@@ -223,15 +231,22 @@ void gather(SolverState& s, StepContext& c, Real dt) {
     BucketBuffer& buffer = c.buffers.local();
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
       const Bucket& b = list[bi];
+      if (c.active_field >= 0 && !bucket_has_field(b, s.buckets.runs(), s.particles, c.active_field)) continue;
+      buffer.field = c.active_field;
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
       buffer.ddmp_alpha_cache = alpha_cache;
       copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,
-                                 buffer, c.tallies[bi], &c.run_tallies[b.run_begin]);
+                                 buffer, tallies[bi], &c.run_tallies[b.run_begin]);
     }
   });
+}
+
+template <class Shape, class Mode>
+void gather(SolverState& s, StepContext& c, Real dt) {
+  gather_buckets<Shape, Mode>(s, c, dt, c.tallies);
   absorb_tallies(s, c, Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
 }
 
@@ -334,9 +349,11 @@ void step_usf(SolverState& s, StepContext& c, Real dt) {
   gather<Shape, GatherMotion>(s, c, dt);
 }
 
-// One step of the settings' scheme with the settings' shape function, on the context's threads.
+// One step of the settings' scheme with the settings' shape function, on the context's threads;
+// with grid contact, its step (field_contact.hpp).
 inline void step_scheme(SolverState& s, StepContext& c, Real dt) {
   c.arena.execute([&] {
+    if (auto* fields = std::get_if<ContactFields>(&c.grid_fields)) return step_with_field_contact(s, c, *fields, dt);
     with_solver_shape(c.settings, [&](auto shape) {
       using Shape = decltype(shape);
       switch (c.settings.scheme) {

@@ -140,6 +140,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
     if (rigid && !Mode::constraint) continue;
+    if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
     // The stencils of up to eight points first: independent computations the CPU overlaps,
     // instead of each one's latency ahead of its point's scatter.
     decltype(particle_stencil<Shape, Mode::force>(ps, run.begin, h, buffer)) stencils[pack_width];
@@ -359,6 +360,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   Pack kinetic{}, strain{}, gravity_power{}, dissipation{};
   for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
     const BodyRun& run = runs[run_index - b.run_begin];
+    if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
     const BodyInfo& body = bodies[run.body];
     RunTally& rt = run_tally[run_index - b.run_begin];
     rt = RunTally{};

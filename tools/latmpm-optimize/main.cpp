@@ -90,8 +90,9 @@ int optimize_main(int argc, char** argv) {
   for (const std::string& method : scene.methods) {
     auto progress = [&](const IterationRecord& r) {
       if (!cl.flag_set("quiet"))
-        std::fprintf(stderr, "%s %4d  C %.6g J  v %.4f  t %.3f  points %zu  unknowns %zu  %.2f s\n", method.c_str(),
-                     r.iteration, r.compliance, r.volume_fraction, r.threshold, r.active_points, r.unknowns, r.seconds);
+        std::fprintf(stderr, "%s %4d  C %.6g J  v %.4f  t %.3f  points %zu  unknowns %zu  newton %d/%d  %.2f s\n",
+                     method.c_str(), r.iteration, r.compliance, r.volume_fraction, r.threshold, r.active_points, r.unknowns,
+                     r.newton_iterations, r.load_steps, r.seconds);
     };
     outcomes.push_back(run_method(scene, method, progress));
     const MethodOutcome& o = outcomes.back();
