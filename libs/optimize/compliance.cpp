@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "statics/load_continuation.hpp"
 #include "statics/projected_newton.hpp"
+#include "statics/static_settings.hpp"
 
 namespace latmpm::optimize {
 
@@ -21,8 +22,6 @@ Real SimpMaterial::modulus_derivative(Real rho) const {
 namespace {
 
 using namespace latmpm::statics;
-
-constexpr Real neo_hookean_stabilisation = 0.1;  // β (× μ), docs/statics.md
 
 // The adjoint of Eq. (19) for a nonlinear energy: K_T(u) λ = f on the free unknowns (λ = 0
 // where prescribed), K_T the true (unprojected) tangent at equilibrium.
@@ -173,11 +172,11 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   // whole load, else by adaptive load continuation from rest.
   const bool linear = problem.is_quadratic();
   // Neo-Hookean: the affine stabilisation of the point quadrature's zero-energy modes
-  // (β = 0.1 × μ_q, latmpm-solve's static default, docs/statics.md): a band cell holding
+  // (β × μ_q, β latmpm-solve's static default, docs/statics.md): a band cell holding
   // one or two design points has hourglass modes that the linear solve's diagonal shift
   // holds but that leave the nonlinear equilibrium without a solution. Its energy
   // c_q/2 (1/n) Σ|r_k|², c_q = β μ V_q / h² ∝ E_q, is part of C and of its gradient.
-  const Real beta = linear ? 0 : neo_hookean_stabilisation;
+  const Real beta = linear ? 0 : StaticSettings{}.stabilisation;
   problem.set_stabilisation(beta);
   LoadContinuation continuation;
   continuation.newton.max_iterations = linear ? 10 : 30;  // linear: iterative refinement where E_min = 1e-9 E makes K ill-conditioned
