@@ -90,6 +90,9 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
       << "connectivity_corrections = " << o.corrections << "\n"
       << "linear_fallbacks = " << o.result.linear_fallbacks << "  # neo-Hookean iterations stepped on the linear compliance\n"
       << "components = " << o.components << "\n";
+    if (scene.evaluate_other_model)
+      s << "compliance_other_model_J = " << number(o.compliance_other_model) << "  # binary design, optimisation grid, "
+        << (scene.material.model == mpm::MaterialKind::linear_elastic ? "neo-Hookean" : "linear elastic") << "\n";
   }
   write_file_atomically(directory + "/summary.toml", s.str(), "--output");
 }
