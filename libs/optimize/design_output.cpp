@@ -100,6 +100,9 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
       << "connectivity_corrections = " << o.corrections << "\n"
       << "linear_fallbacks = " << o.result.linear_fallbacks << "  # neo-Hookean iterations stepped on the linear compliance\n"
       << "components = " << o.components << "\n";
+    if (scene.evaluate_other_model)
+      s << "compliance_other_model_J = " << number(o.compliance_other_model) << "  # binary design, optimisation grid, "
+        << (scene.material.model == mpm::MaterialKind::linear_elastic ? "neo-Hookean" : "linear elastic") << "\n";
     if (i < exports.size())
       s << "part_points_volume_mm3 = " << number(1e9 * exports[i].solid_volume)
         << "  # the exported part (mirrored whole): its solid points\n";

@@ -67,6 +67,12 @@ MethodOutcome run_method(const OptimizeScene& scene, const std::string& method,
   out.compliance_binary = evaluate_binary_design(scene.grid, out.binary, scene.load_case, scene.material, 1);
   if (scene.evaluate_refined)
     out.compliance_refined = evaluate_binary_design(scene.grid, out.binary, scene.load_case, scene.material, scene.refine);
+  if (scene.evaluate_other_model) {
+    SimpMaterial other = scene.material;
+    other.model = other.model == mpm::MaterialKind::linear_elastic ? mpm::MaterialKind::neo_hookean
+                                                                   : mpm::MaterialKind::linear_elastic;
+    out.compliance_other_model = evaluate_binary_design(scene.grid, out.binary, scene.load_case, other, 1);
+  }
   return out;
 }
 

@@ -20,6 +20,7 @@ struct MethodOutcome {
   Real compliance_last = 0;          // C of the last iteration (grey for SIMP), J
   Real compliance_binary = 0;        // the binary design at the optimisation resolution, J
   Real compliance_refined = 0;       // the binary design on the refined grid, J (0: not evaluated)
+  Real compliance_other_model = 0;   // under the other material model, optimisation grid, J (0: not evaluated)
   size_t corrections = 0;            // paths the connectivity correction created
   size_t components = 0;             // connected components of the binary design (quadrature graph)
   Real seconds_per_iteration = 0;    // mean wall time of an iteration

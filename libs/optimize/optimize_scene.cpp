@@ -158,6 +158,7 @@ void read_simp(TableReader t, OptimizeScene& s) {
 void read_evaluation(TableReader t, OptimizeScene& s) {
   s.evaluate_refined = t.boolean("refined", true);
   s.refine = int(t.integer("refine", s.grid.per_cell));
+  s.evaluate_other_model = t.boolean("other_model", false);
   if (s.refine < 1) t.fail("refine", "must be at least 1");
   t.finish();
 }

@@ -34,6 +34,10 @@ struct OptimizeScene {
   int simp_max_iterations = 0;  // 0: optimize.max_iterations
   int refine = 2;              // evaluation grid: cell / refine (paper C: 2)
   bool evaluate_refined = true;
+  // Also the binary design's compliance under the other material model (linear elastic <->
+  // neo-Hookean) at the optimisation resolution: how a design made for one model fares
+  // under the other (paper C Sec. 4.3).
+  bool evaluate_other_model = false;
 };
 
 OptimizeScene read_optimize_scene(const std::string& path, const std::vector<std::string>& overrides = {});

@@ -6,7 +6,8 @@ usage: explicit_stiffness.py POST_DIR SUMMARY_TOML METHOD ROUTE
 POST_DIR: latmpm-post over the run of the whole (mirrored) part loaded by a driven box, with
 --fit-range 20%:100% (the contact's start left out), label "driven" (--load load_driven) and
 "fixed" (--load load_fixed, a second call into POST_DIR/fixed); SUMMARY_TOML:
-latmpm-optimize's summary.toml; METHOD: leto or simp; ROUTE: stl or points.
+latmpm-optimize's summary.toml; METHOD: leto or simp; ROUTE: stl, stl-0.5mm (voxelized and
+solved at 0.5 mm cells) or points.
 Every number is a tool's: the optimiser's part stiffness (2^mirrors F^2 / (2 C)) and the
 exported part's volume from summary.toml; the explicit stiffness (least-squares slope of the
 load against the travel) with the largest KE/SE over its fit, the secant 2 W / d^2 of the
@@ -40,8 +41,10 @@ def main():
     k_driven = float(driven["initial_stiffness"]) * n_per_mm
     k_fixed = float(fixed["initial_stiffness"]) * n_per_mm
     k_energy = float(checks["energy_secant_stiffness"]) * n_per_mm
-    where = "voxelized STL" if route == "stl" else "design's point file"
-    print(f"| {method} | {where} | {k_opt:.4g} | {k_ref:.4g} | {k_driven:.4g} ({100 * (k_driven / k_opt - 1):+.1f} %) "
+    where = "voxelized STL" if route.startswith("stl") else "design's point file"
+    where += ", 0.5 mm cells" if route == "stl-0.5mm" else ""
+    print(f"| {method} | {where} | {k_opt:.4g} | {k_ref:.4g} (explicit {100 * (k_driven / k_ref - 1):+.1f} %) "
+          f"| {k_driven:.4g} ({100 * (k_driven / k_opt - 1):+.1f} %) "
           f"| {k_fixed:.4g} | {k_energy:.4g} ({100 * (k_energy / k_opt - 1):+.1f} %) | {float(driven['stiffness_fit_ke_over_se']):.2g} "
           f"| {s['part_points_volume_mm3']:.4g} / {float(driven['specimen_volume']):.1f} |")
 

@@ -31,4 +31,12 @@ for example in examples:
         print(f"| {example} | {method} | {head['cells']} | {100 * float(m['volume_fraction']):.2f} | "
               f"{float(m['compliance_J']):.4g} | {float(m['compliance_refined_J']):.4g} | {m['iterations']} | "
               f"{float(m['seconds_per_iteration']):.3f} | {m['components']} | {m['connectivity_corrections']} |")
+other = [(e, m) for e in examples for m in [read(f"{out}/{e}/summary.toml")[1]] if any("compliance_other_model_J" in v for v in m.values())]
+if other:
+    print("\nThe same binary designs under the other material model (optimisation grid; paper C Sec. 4.3):\n")
+    print("| example | method | C, its own model (J) | C, the other model (J) |")
+    print("|---|---|---|---|")
+    for example, methods in other:
+        for method, m in methods.items():
+            print(f"| {example} | {method} | {float(m['compliance_J']):.4g} | {float(m['compliance_other_model_J']):.4g} |")
 print("\nPictures: <example>/<method>-design.png; parts: <example>/<method>-part.stl, <method>-points.h5.")
