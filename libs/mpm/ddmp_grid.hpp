@@ -1,14 +1,15 @@
 // DDMP's smoothed gradient evaluated on the grid (Paper A Eq. 4, the paper's own practice).
 //
 // The per-particle sum over 4×4×4 nodes of Eq. 7 is split into a particle part on the
-// particle's 8 cell corners and a constant 27-node stencil pass over the grid:
+// particle's 8 cell corners and a constant 27-node stencil pass over the grid (separable:
+// three 1D passes of 3 taps):
 //   force:  −Σ_p V_p σ_p (1 − α_p) Σ_j S_j(x_p)/V_j ∫ S_j ∇S_i dV = −Σ_j σ^d_j ∫ S_j ∇S_i dV,
 //           σ^d_j V_j = Σ_p (1 − α_p) S_j(x_p) V_p σ_p          (P2G, 6 values per node);
 //   L:      Σ_i v_i ⊗ (1 − α_p) Σ_j S_j/V_j ∫ S_j ∇S_i = (1 − α_p) Σ_j S_j(x_p) L_j,
 //           L_j = (1/V_j) Σ_i v_i ⊗ ∫ S_j ∇S_i dV                (grid pass, 9 values per node),
 // with V_j = h³ and ∫ S_j ∇S_i dV = h² G(i − j), G the separable stencil of shape_ddmp.hpp
 // (ddmp_smoothing_mass, ddmp_smoothing_slope). Both are the per-particle ∇̄S regrouped, so
-// results agree with DdmpShape to round-off. The passes write each node from its 27
+// results agree with DdmpShape to round-off. The passes write each node from its
 // neighbours in a fixed order: deterministic for any thread count.
 //
 // Small-mass nodes: ddmp_small_mass.hpp. The nodal values live beside the grid's 8 lanes,
@@ -27,6 +28,8 @@
 
 namespace latmpm::mpm {
 
+struct DdmpDistribution;
+
 // Per grid node, in block order like the grid (block · 64 + node):
 //   after P2G: M_j = Σ_p (1 − α_p) S_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy;
 //   while small-mass nodes are handed on: the lanes being moved or read back;
@@ -37,10 +40,10 @@ struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
   std::vector<Real> values;
   std::vector<Real> coefficients;
+  std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
   std::vector<uint8_t> block_has_small;  // per block: some node hands on
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
-  std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache), valid once alpha_filled
-  bool alpha_filled = false;
+  std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
 
   Real* node(size_t block, int n) { return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count; }
   const Real* node(size_t block, int n) const {
@@ -127,26 +130,35 @@ void load_index_halo(const DdmpNodalValues& nv, size_t block, IndexHalo<Reach>& 
   });
 }
 
-// G(o) of the smoothing integral ∫ S_j ∇S_i dV = h² G(i − j) for the 27 offsets
-// o ∈ {−1, 0, 1}³ (index neighbour_index).
-struct SmoothingStencil {
-  std::array<Vec3, 27> G;
-};
-inline const SmoothingStencil& smoothing_stencil() {
-  static const SmoothingStencil s = [] {
-    SmoothingStencil t;
-    for (int x = -1; x <= 1; ++x)
-      for (int y = -1; y <= 1; ++y)
-        for (int z = -1; z <= 1; ++z) {
-          const Real mx = ddmp_smoothing_mass(x), my = ddmp_smoothing_mass(y), mz = ddmp_smoothing_mass(z);
-          t.G[size_t(neighbour_index(x, y, z))] =
-              Vec3(ddmp_smoothing_slope(x) * my * mz, mx * ddmp_smoothing_slope(y) * mz, mx * my * ddmp_smoothing_slope(z));
-        }
-    return t;
-  }();
-  return s;
+// The smoothing integral's 1D factors (shape_ddmp.hpp) as operators along one axis of a
+// halo, the stencil's three taps at nodes n − 1, n, n + 1 (u₋, u₀, u₊):
+//   mass M:   Σ_o M(o) u(n − o) = (u₋ + 4 u₀ + u₊)/6 (symmetric);
+//   slope D:  Σ_o D(o) u(n − o) = ½ (u₋ − u₊)  (the force: node j = i − o feeds node i);
+//   slope D': Σ_o D(o) u(n + o) = ½ (u₊ − u₋)  (L: node i = j + o feeds node j).
+// G = (D M M, M D M, M M D) is separable, so the 27-node sums of the force and of L are
+// three passes of 3 taps (z, then y, then x) instead of one of 27.
+inline Real smooth_mass(Real below, Real at, Real above) {
+  return ddmp_smoothing_mass(1) * below + ddmp_smoothing_mass(0) * at + ddmp_smoothing_mass(-1) * above;
+}
+inline Real smooth_slope(Real below, Real above) {
+  return ddmp_smoothing_slope(1) * below + ddmp_smoothing_slope(-1) * above;
 }
 
+// out[a][b][c][q] = op_q(in along one axis) over a box: Out components from In components,
+// the three taps of node (a, b, c) along `Axis` at index ±1 of the input (whose extent along
+// that axis is 2 more than the output's). `op(taps, out)` with taps[t][q] = in at tap t.
+template <int Axis, int NA, int NB, int NC, int In, int Out, class Op>
+void pass_along(const Real (&in)[NA + 2 * (Axis == 0)][NB + 2 * (Axis == 1)][NC + 2 * (Axis == 2)][In],
+                Real (&out)[NA][NB][NC][Out], Op op) {
+  for (int a = 0; a < NA; ++a)
+    for (int b = 0; b < NB; ++b)
+      for (int c = 0; c < NC; ++c) {
+        const Real* taps[3];
+        for (int t = 0; t < 3; ++t)
+          taps[t] = in[a + (Axis == 0 ? t : 0)][b + (Axis == 1 ? t : 0)][c + (Axis == 2 ? t : 0)];
+        op(taps, out[a][b][c]);
+      }
+}
 }  // namespace ddmp_grid_detail
 
 // Sizes and zeroes the nodal values for the grid's active blocks and finds each block's
@@ -156,9 +168,9 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   const size_t blocks = grid.block_count();
   nv.values.assign(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));
   nv.coefficients.assign(blocks * SparseGrid::nodes_per_block * 4, Real(0));
+  nv.distributions.assign(blocks * SparseGrid::nodes_per_block, nullptr);
   nv.block_has_small.assign(blocks, 0);
   nv.neighbours.resize(blocks);
-  nv.alpha_filled = false;  // a new step: the points have moved
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);
     for (int dx = -1; dx <= 1; ++dx)
@@ -168,69 +180,105 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   });
 }
 
-// The α cache of a particle pass: the first pass of a step (after prepare_ddmp_nodal_values)
-// fills it; end_ddmp_alpha_pass after a pass that visited every point makes it valid.
-inline DdmpAlphaCache begin_ddmp_alpha_pass(DdmpNodalValues& nv, size_t particles) {
-  if (!nv.alpha_filled) nv.alpha.resize(particles);
-  return {nv.alpha.data(), !nv.alpha_filled};
+// α of every point at x^n, once per step (before the step's first pass; DdmpAlphaCache).
+inline void fill_ddmp_alpha(const std::vector<Vec3>& positions, Real h, const DdmpPartition& partition,
+                            DdmpNodalValues& nv) {
+  nv.alpha.resize(positions.size());
+  constexpr size_t chunk = 4096;
+  tbb::parallel_for(size_t(0), (positions.size() + chunk - 1) / chunk, [&](size_t c) {
+    const size_t first = c * chunk, n = std::min(chunk, positions.size() - first);
+    ddmp_partition_of_points(positions.data() + first, n, 1 / h, partition, nv.alpha.data() + first);
+  });
 }
-inline void end_ddmp_alpha_pass(DdmpNodalValues& nv) { nv.alpha_filled = true; }
+inline DdmpAlphaCache ddmp_alpha_of_step(DdmpNodalValues& nv) { return {nv.alpha.data()}; }
 
 // Zeroes every node's values (before a scatter that maps the stress again).
 inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) { std::fill(nv.values.begin(), nv.values.end(), Real(0)); }
 
 // f_i += Σ_j (M_j / h³) h² G(i − j) = Σ_j M_j G(i − j) / h over the 27 neighbours j, with
-// M_j the mapped −(1 − α) S V σ (Voigt order): the smoothed part of Eq. 6's force, into
-// the grid's force lanes.
+// M_j the mapped −(1 − α) S V σ (Voigt order xx yy zz yz xz xy): the smoothed part of Eq.
+// 6's force, into the grid's force lanes. Separable: z, y, x passes of 3 taps, e.g.
+// f_x = D_x M_y M_z σxx + M_x D_y M_z σxy + M_x M_y D_z σxz.
 inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv, Real h) {
   using namespace ddmp_grid_detail;
-  const auto& G = smoothing_stencil().G;
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<6> s;
     load_halo<1, 6>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, s);
+    // z: M_z of the 6 components, D_z of σxz, σyz, σzz.
+    Real z[bw + 2][bw + 2][bw][9];
+    pass_along<2, bw + 2, bw + 2, bw, 6, 9>(s.v, z, [](const Real* const* t, Real* o) {
+      for (int q = 0; q < 6; ++q) o[q] = smooth_mass(t[0][q], t[1][q], t[2][q]);
+      o[6] = smooth_slope(t[0][4], t[2][4]);
+      o[7] = smooth_slope(t[0][3], t[2][3]);
+      o[8] = smooth_slope(t[0][2], t[2][2]);
+    });
+    // y: M_y M_z (xx, xy, xz), D_y M_z (xy, yy, yz), M_y D_z (xz, yz, zz).
+    Real y[bw + 2][bw][bw][9];
+    pass_along<1, bw + 2, bw, bw, 9, 9>(z, y, [](const Real* const* t, Real* o) {
+      o[0] = smooth_mass(t[0][0], t[1][0], t[2][0]);
+      o[1] = smooth_mass(t[0][5], t[1][5], t[2][5]);
+      o[2] = smooth_mass(t[0][4], t[1][4], t[2][4]);
+      o[3] = smooth_slope(t[0][5], t[2][5]);
+      o[4] = smooth_slope(t[0][1], t[2][1]);
+      o[5] = smooth_slope(t[0][3], t[2][3]);
+      for (int q = 6; q < 9; ++q) o[q] = smooth_mass(t[0][q], t[1][q], t[2][q]);
+    });
+    // x: f_a = D_x (M_y M_z σ_xa) + M_x (D_y M_z σ_ya) + M_x (M_y D_z σ_za).
+    Real f[bw][bw][bw][3];
+    pass_along<0, bw, bw, bw, 9, 3>(y, f, [](const Real* const* t, Real* o) {
+      for (int a = 0; a < 3; ++a)
+        o[a] = smooth_slope(t[0][a], t[2][a]) + smooth_mass(t[0][3 + a], t[1][3 + a], t[2][3 + a]) +
+               smooth_mass(t[0][6 + a], t[1][6 + a], t[2][6 + a]);
+    });
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
-          Real f[3] = {0, 0, 0};
-          for (int x = -1; x <= 1; ++x)
-            for (int y = -1; y <= 1; ++y)
-              for (int z = -1; z <= 1; ++z) {
-                const Real* sj = s.v[i + 1 - x][j + 1 - y][k + 1 - z];  // node j = i − o
-                const Vec3& g = G[size_t(neighbour_index(x, y, z))];
-                f[0] += sj[0] * g[0] + sj[5] * g[1] + sj[4] * g[2];
-                f[1] += sj[5] * g[0] + sj[1] * g[1] + sj[3] * g[2];
-                f[2] += sj[4] * g[0] + sj[3] * g[1] + sj[2] * g[2];
-              }
           Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
-          for (int a = 0; a < 3; ++a) node[lane::force + a] += inv_h * f[a];
+          for (int a = 0; a < 3; ++a) node[lane::force + a] += inv_h * f[i][j][k][a];
         }
   });
 }
 
 // L_j = (1/h³) Σ_i v_i ⊗ h² G(i − j) from the grid velocities in lanes velocity_lane … + 2,
-// into the nodal values (row-major).
+// into the nodal values (row-major): L_rc = D'_c-separable passes of v_r, as the force.
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  const auto& G = smoothing_stencil().G;
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<3> v;
     load_halo<1, 3>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + velocity_lane; }, v);
+    // z: M_z v, D'_z v.
+    Real z[bw + 2][bw + 2][bw][6];
+    pass_along<2, bw + 2, bw + 2, bw, 3, 6>(v.v, z, [](const Real* const* t, Real* o) {
+      for (int r = 0; r < 3; ++r) {
+        o[r] = smooth_mass(t[0][r], t[1][r], t[2][r]);
+        o[3 + r] = smooth_slope(t[2][r], t[0][r]);
+      }
+    });
+    // y: M_y M_z v, D'_y M_z v, M_y D'_z v.
+    Real y[bw + 2][bw][bw][9];
+    pass_along<1, bw + 2, bw, bw, 6, 9>(z, y, [](const Real* const* t, Real* o) {
+      for (int r = 0; r < 3; ++r) {
+        o[r] = smooth_mass(t[0][r], t[1][r], t[2][r]);
+        o[3 + r] = smooth_slope(t[2][r], t[0][r]);
+        o[6 + r] = smooth_mass(t[0][3 + r], t[1][3 + r], t[2][3 + r]);
+      }
+    });
+    // x: L_r0 = D'_x M_y M_z v_r, L_r1 = M_x D'_y M_z v_r, L_r2 = M_x M_y D'_z v_r.
+    Real L[bw][bw][bw][9];
+    pass_along<0, bw, bw, bw, 9, 9>(y, L, [](const Real* const* t, Real* o) {
+      for (int r = 0; r < 3; ++r) {
+        o[r * 3 + 0] = smooth_slope(t[2][r], t[0][r]);
+        o[r * 3 + 1] = smooth_mass(t[0][3 + r], t[1][3 + r], t[2][3 + r]);
+        o[r * 3 + 2] = smooth_mass(t[0][6 + r], t[1][6 + r], t[2][6 + r]);
+      }
+    });
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
-          Real L[9] = {};
-          for (int x = -1; x <= 1; ++x)
-            for (int y = -1; y <= 1; ++y)
-              for (int z = -1; z <= 1; ++z) {
-                const Real* vi = v.v[i + 1 + x][j + 1 + y][k + 1 + z];  // node i = j + o
-                const Vec3& g = G[size_t(neighbour_index(x, y, z))];
-                for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) L[r * 3 + c] += vi[r] * g[c];
-              }
           Real* out = nv.node(b, (i * bw + j) * bw + k);
-          for (int c = 0; c < 9; ++c) out[c] = inv_h * L[c];
+          for (int c = 0; c < 9; ++c) out[c] = inv_h * L[i][j][k][c];
         }
   });
 }

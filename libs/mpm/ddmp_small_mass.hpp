@@ -15,6 +15,7 @@
 // smoothed velocity gradient of a surface node sees no spurious shear. Their staged
 // lanes and coefficients live in DdmpNodalValues (ddmp_grid.hpp).
 #pragma once
+#include <tbb/concurrent_unordered_map.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Cholesky>
@@ -23,7 +24,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdlib>
-#include <unordered_map>
+#include <vector>
 
 #include "mpm/ddmp_grid.hpp"
 
@@ -31,7 +32,6 @@ namespace latmpm::mpm {
 
 namespace ddmp_grid_detail {
 constexpr int reach = 2;  // the neighbourhood of a small-mass node: offsets −2 … 2 per axis
-constexpr int wide = bw + 2 * reach;  // nodes per axis of a block with that neighbourhood
 
 // C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
 inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
@@ -77,12 +77,6 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
   }();
   return list;
 }
-// Calls fn(x, y, z, w) for those offsets and their weights.
-template <class Fn>
-[[gnu::always_inline]] inline void for_each_offset(Fn&& fn) {
-  for (const Offset& o : neighbour_offsets()) fn(o.x, o.y, o.z, o.weight);
-}
-
 // The pattern of a small-mass node's neighbourhood: bit o set when the neighbour at
 // neighbour_offsets()[o] is sizeable (o < 124), bit 127 when the node holds mass of its
 // own. Its distribution coefficients are a function of this alone (fit_distribution).
@@ -97,6 +91,23 @@ struct NeighbourPatternHash {
   }
 };
 using Fit = std::array<Real, 4>;
+}  // namespace ddmp_grid_detail
+
+// A pattern's fit and its shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours, in
+// neighbour_offsets order: the hand-on and the read-back visit these, not all 124 offsets.
+struct DdmpDistribution {
+  struct Share {
+    int x, y, z;  // d = i − l
+    Real C;
+  };
+  ddmp_grid_detail::Fit fit;
+  std::vector<Share> shares;
+  // The same by offset, (x + 2)·25 + (y + 2)·5 + z + 2: C, and whether that node receives.
+  std::array<Real, 125> C_at{};
+  std::array<bool, 125> receives{};
+};
+
+namespace ddmp_grid_detail {
 
 // (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours (zero:
 // none, the node does not hand on); the weighted mean where they do not span 3D or where a
@@ -128,16 +139,28 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
   return {fit[0], fit[1], fit[2], fit[3]};
 }
 
-// fit_distribution, remembered per thread: a surface has few patterns (a flat face, its
-// edges and corners, a particle entering a cell), so the 4×4 solves run once per pattern,
-// not once per node and step. A pure function of the pattern: results do not depend on
-// what a thread has seen.
-inline const Fit& remembered_fit(const NeighbourPattern& pattern) {
-  thread_local std::unordered_map<NeighbourPattern, Fit, NeighbourPatternHash> memo;
-  if (memo.size() > (size_t(1) << 16)) memo.clear();  // a bound on memory, never reached in practice
+// The distribution of a pattern, remembered: a surface has few patterns (a flat face, its
+// edges and corners, a particle entering a cell), so the 4×4 solve and the shares are
+// computed once per pattern, not once per node and step. Insert-only and shared by the
+// threads (entries never move); a pure function of the pattern, so results do not depend
+// on which thread computed it.
+inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& pattern) {
+  static tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash> memo;
   const auto it = memo.find(pattern);
   if (it != memo.end()) return it->second;
-  return memo.emplace(pattern, fit_distribution(pattern)).first->second;
+  DdmpDistribution d;
+  d.fit = fit_distribution(pattern);
+  if (d.fit[0] != 0)
+    for (int o = 0; o < offset_count; ++o) {
+      const Offset& off = neighbour_offsets()[size_t(o)];
+      if (!pattern.sizeable(o)) continue;
+      const Real C = distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight);
+      d.shares.push_back({off.x, off.y, off.z, C});
+      const size_t at = size_t((off.x + 2) * 25 + (off.y + 2) * 5 + off.z + 2);
+      d.C_at[at] = C;
+      d.receives[at] = true;
+    }
+  return memo.insert({pattern, std::move(d)}).first->second;
 }
 }  // namespace ddmp_grid_detail
 
@@ -157,6 +180,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     const Real* block = grid.block(b);
     std::fill_n(coefficients_of(nv, b, 0), 4 * SparseGrid::nodes_per_block, Real(0));
+    std::fill_n(nv.distributions.begin() + std::ptrdiff_t(b * SparseGrid::nodes_per_block), SparseGrid::nodes_per_block, nullptr);
     nv.block_has_small[b] = 0;
     // A node hands on when its mass is small and no body holds it, or when a body holds it
     // but no deformable point gives it mass (a node inside a rigid plate of points, one
@@ -187,9 +211,10 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
             if (mass.at(i + d.x, j + d.y, k + d.z)[0] >= small_mass) pattern.bits[o >> 6] |= uint64_t(1) << (o & 63);
           }
           if (block[n * lane::count + lane::mass] > 0) pattern.bits[1] |= uint64_t(1) << 63;
-          const Fit& fit = remembered_fit(pattern);
-          if (fit[0] == 0) continue;
-          std::copy(fit.begin(), fit.end(), coefficients_of(nv, b, n));
+          const DdmpDistribution& d = remembered_distribution(pattern);
+          if (d.fit[0] == 0) continue;
+          std::copy(d.fit.begin(), d.fit.end(), coefficients_of(nv, b, n));
+          nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)] = &d;
           nv.block_has_small[b] = 1;
         }
   });
@@ -198,7 +223,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
 // Hands lanes [first, first + count) of every small-mass node on to its sizeable
 // neighbours, C_li times each, and zeroes them (mass, momentum and force after P2G; the
 // remapped momentum of MUSL).
-inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int first, int count, DdmpNodalValues& nv) {
+inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // stage and clear the sources
     if (!nv.block_has_small[b]) return;
@@ -213,7 +238,8 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int fi
     if (!near_small_mass(nv, b)) return;
     // The sources within reach of this block (halo order: the same order for every
     // receiver, so the sums do not depend on threads), then each source's part to the
-    // block's sizeable nodes within two cells of it.
+    // block's sizeable nodes within two cells of it: its shares, the sizeable nodes when
+    // it was found (find_ddmp_small_mass_nodes; they only gain mass, so they stay so).
     IndexHalo<reach> nodes;
     load_index_halo(nv, b, nodes);
     Real* block = grid.block(b);
@@ -222,18 +248,16 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int fi
         for (int sk = -reach; sk < bw + reach; ++sk) {
           const int32_t l = nodes.at(si, sj, sk);
           if (l < 0) continue;
-          const Real* c = nv.coefficients.data() + size_t(l) * 4;
-          if (c[0] == 0) continue;
+          const DdmpDistribution* d = nv.distributions[size_t(l)];
+          if (!d) continue;
           const Real* staged = nv.values.data() + size_t(l) * DdmpNodalValues::count;
           for (int i = std::max(0, si - reach); i <= std::min(bw - 1, si + reach); ++i)
             for (int j = std::max(0, sj - reach); j <= std::min(bw - 1, sj + reach); ++j)
               for (int k = std::max(0, sk - reach); k <= std::min(bw - 1, sk + reach); ++k) {
-                const int x = i - si, y = j - sj, z = k - sk;  // d = i − l
-                if (x == 0 && y == 0 && z == 0) continue;
+                const size_t at = size_t((i - si + 2) * 25 + (j - sj + 2) * 5 + (k - sk + 2));  // d = i − l
+                if (!d->receives[at]) continue;
                 Real* node = block + SparseGrid::node_offset(i, j, k);
-                if (!(node[lane::mass] >= small_mass)) continue;
-                const Real C = distribution_coefficient(c, x, y, z, offset_weight(x, y, z));
-                for (int q = 0; q < count; ++q) node[first + q] += C * staged[q];
+                for (int q = 0; q < count; ++q) node[first + q] += d->C_at[at] * staged[q];
               }
         }
   });
@@ -242,7 +266,7 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int fi
 // Lanes [first, first + count) of every small-mass node from its sizeable neighbours,
 // v_l = Σ_i C_li v_i (the new velocity and its change after the grid update; MUSL's
 // remapped velocity).
-inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int first, int count, DdmpNodalValues& nv) {
+inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (!nv.block_has_small[b]) return;
@@ -253,18 +277,14 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, Real small_mass, int 
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           const int n = (i * bw + j) * bw + k;
-          const Real* c = coefficients_of(nv, b, n);
-          if (c[0] == 0) continue;
+          const DdmpDistribution* d = nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+          if (!d) continue;
           Real* staged = nv.node(b, n);
           for (int q = 0; q < count; ++q) staged[q] = 0;
-          for_each_offset([&](int x, int y, int z, Real w) {
-            const int32_t other_node = nodes.at(i + x, j + y, k + z);
-            if (other_node < 0) return;
-            const Real* other = lanes + size_t(other_node) * lane::count;
-            if (!(other[lane::mass] >= small_mass)) return;
-            const Real C = distribution_coefficient(c, x, y, z, w);
-            for (int q = 0; q < count; ++q) staged[q] += C * other[first + q];
-          });
+          for (const DdmpDistribution::Share& share : d->shares) {  // sizeable, so active
+            const Real* other = lanes + size_t(nodes.at(i + share.x, j + share.y, k + share.z)) * lane::count;
+            for (int q = 0; q < count; ++q) staged[q] += share.C * other[first + q];
+          }
         }
   });
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {

@@ -86,12 +86,40 @@ inline Real ddmp_partition(const Vec3& f, const DdmpPartition& alpha = {}) {
 }
 
 // α per point for one step (DdmpGridShape): every pass of a step sees the point at x^n, so
-// the step's first pass computes α (a pow, 14 % of a DDMP step when each pass did) and
-// keeps it at values[p]; the later passes read it. values == nullptr: compute every time.
+// α is computed once per point at the step's start (ddmp_partition_of_points) and the
+// passes read it at values[p]. values == nullptr: compute every time.
 struct DdmpAlphaCache {
   Real* values = nullptr;
-  bool fill = true;
 };
+
+// The position f ∈ [0, 1)³ of x in its cell, and the cell.
+inline Vec3 ddmp_cell_position(const Vec3& x, Real inv_h, int cell[3]) {
+  Vec3 f;
+  for (int a = 0; a < 3; ++a) {
+    const Real xi = x[a] * inv_h;
+    cell[a] = floor_to_int(xi);
+    f[a] = xi - Real(cell[a]);
+  }
+  return f;
+}
+
+// α of the points x[0 … n) into alpha: ddmp_partition with peak · exp(exponent · ln p) in
+// place of pow, over the chunk at once with Eigen's array log and exp (one scalar pow per
+// point and step was 8 % of a DDMP step; now 4 %). Agrees with ddmp_partition to a few ulps
+// (the grid form's tests against the per-particle form, which uses pow, hold it to 1e-12).
+inline void ddmp_partition_of_points(const Vec3* x, size_t n, Real inv_h, const DdmpPartition& partition, Real* alpha) {
+  using Array = Eigen::Array<Real, Eigen::Dynamic, 1>;
+  Eigen::Map<Array> out(alpha, Eigen::Index(n));
+  for (size_t p = 0; p < n; ++p) {
+    int cell[3];
+    const Vec3 f = ddmp_cell_position(x[p], inv_h, cell);
+    Real q = 1;
+    for (int a = 0; a < 3; ++a) q *= 4 * f[a] * (1 - f[a]);
+    out[Eigen::Index(p)] = q;
+  }
+  const Array q = out;
+  out = (q > 0).select(partition.peak * (partition.exponent * q.log()).exp(), Real(0));
+}
 
 // The particle's cell, its linear weights and α: what both evaluations of Eq. 7 share.
 struct DdmpCellFrame {
@@ -103,20 +131,12 @@ struct DdmpCellFrame {
 inline DdmpCellFrame ddmp_cell_frame(const Vec3& x, Real inv_h, const DdmpPartition& partition,
                                      DdmpAlphaCache cache = {}, size_t p = 0) {
   DdmpCellFrame fr;
-  Vec3 f;
+  const Vec3 f = ddmp_cell_position(x, inv_h, fr.cell);
   for (int a = 0; a < 3; ++a) {
-    const Real xi = x[a] * inv_h;
-    fr.cell[a] = floor_to_int(xi);
-    f[a] = xi - Real(fr.cell[a]);
     fr.N[a][0] = 1 - f[a];
     fr.N[a][1] = f[a];
   }
-  if (cache.values && !cache.fill) {
-    fr.alpha = cache.values[p];
-  } else {
-    fr.alpha = ddmp_partition(f, partition);
-    if (cache.values) cache.values[p] = fr.alpha;
-  }
+  fr.alpha = cache.values ? cache.values[p] : ddmp_partition(f, partition);
   return fr;
 }
 

@@ -176,6 +176,8 @@ void prepare_grid(SolverState& s, StepContext& c) {
           c.tables[bi][(i * 4 + j) * 4 + k] = s.grid.find(first[0] + i, first[1] + j, first[2] + k);
   }
   if constexpr (Shape::smoothed_gradient) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
+  if constexpr (Shape::smoothed_on_grid)
+    fill_ddmp_alpha(s.particles.position, c.settings.cell_size, c.ddmp_partition(), c.ddmp_nodal);
   clear_grid(s.grid);
   s.grid_holds_velocity = false;
   c.tallies.assign(list.size(), BucketTally{});
@@ -188,7 +190,7 @@ void scatter(SolverState& s, StepContext& c) {
   constexpr bool nodal_stress = Mode::force && Shape::smoothed_on_grid;
   if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = ddmp_alpha_of_step(c.ddmp_nodal);
   for (int ci = 0; ci < 8; ++ci) {
     const auto& colour = s.buckets.colours()[size_t(ci)];
     // Buckets of one colour are two buckets apart: their boxes never overlap.
@@ -211,8 +213,6 @@ void scatter(SolverState& s, StepContext& c) {
     });
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
-  // A pass that marks constraints visits every point, rigid ones too: α is then complete.
-  if constexpr (Shape::smoothed_on_grid && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }
@@ -227,7 +227,7 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
   constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && Shape::smoothed_on_grid;
   if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(s.grid, Mode::gradient_lane, st.cell_size, c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = ddmp_alpha_of_step(c.ddmp_nodal);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketBuffer& buffer = c.buffers.local();
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
@@ -259,14 +259,14 @@ template <class Shape>
 void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool find) {
   if constexpr (Shape::smoothed_gradient) {
     if (find) find_ddmp_small_mass_nodes(s.grid, ddmp_small_mass(s, c), c.ddmp_nodal);
-    move_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
+    move_ddmp_small_mass_lanes(s.grid, first, count, c.ddmp_nodal);
   }
 }
 // After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
 template <class Shape>
 void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
   if constexpr (Shape::smoothed_gradient)
-    spread_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
+    spread_ddmp_small_mass_lanes(s.grid, first, count, c.ddmp_nodal);
 }
 
 // --- The contact stage (rigid_contact.hpp) ----------------------------------------------
