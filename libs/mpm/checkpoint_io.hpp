@@ -39,6 +39,16 @@ template <>
 struct CheckpointCodec<SymTensor> { static constexpr int components = 6; };
 template <>
 struct CheckpointCodec<CpdiParticleDomain> { static constexpr int components = 56; };
+#if defined(LATMPM_MIXED_PRECISION)  // the float particle state (real.hpp), stored as doubles too
+template <>
+struct CheckpointCodec<ParticleReal> { static constexpr int components = 1; };
+template <>
+struct CheckpointCodec<ParticleVec3> { static constexpr int components = 3; };
+template <>
+struct CheckpointCodec<ParticleMat3> { static constexpr int components = 9; };
+template <>
+struct CheckpointCodec<ParticleSymTensor> { static constexpr int components = 6; };
+#endif
 
 class CheckpointWriter {
  public:
@@ -48,7 +58,8 @@ class CheckpointWriter {
   void integer(const std::string& name, int64_t value);
   void strings(const std::string& name, const std::vector<std::string>& values);
   void integers(const std::string& name, const std::vector<int64_t>& values, size_t columns);
-  // One row per element: Real, Vec3, Mat3 (column-major), SymTensor (Voigt) as doubles;
+  // One row per element: Real, Vec3, Mat3 (column-major), SymTensor (Voigt) and their
+  // ParticleReal forms as doubles;
   // int32, uint8, int64 as they are; uint32 as int64.
   template <class T>
   void rows(const std::string& name, const std::vector<T>& values);
