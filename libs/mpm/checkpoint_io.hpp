@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/checked_read.hpp"  // ValueRange
@@ -26,29 +27,16 @@ namespace latmpm::mpm {
 // 3: plastic_dissipation, cpdi_domain; 4: contact_energy, friction_dissipation.
 inline constexpr int64_t checkpoint_format_version = 4;
 
-// How a value type is stored: its components per row and the dataset element type.
+// How a value type is stored: its components per row (a real: 1; a fixed-size Eigen matrix —
+// Vec3, Mat3, SymTensor, CpdiParticleDomain and their ParticleReal forms — its coefficients).
+template <class T, class = void>
+struct CheckpointCodec {
+  static constexpr int components = 1;
+};
 template <class T>
-struct CheckpointCodec;
-template <>
-struct CheckpointCodec<Real> { static constexpr int components = 1; };
-template <>
-struct CheckpointCodec<Vec3> { static constexpr int components = 3; };
-template <>
-struct CheckpointCodec<Mat3> { static constexpr int components = 9; };
-template <>
-struct CheckpointCodec<SymTensor> { static constexpr int components = 6; };
-template <>
-struct CheckpointCodec<CpdiParticleDomain> { static constexpr int components = 56; };
-#if defined(LATMPM_MIXED_PRECISION)  // the float particle state (real.hpp), stored as doubles too
-template <>
-struct CheckpointCodec<ParticleReal> { static constexpr int components = 1; };
-template <>
-struct CheckpointCodec<ParticleVec3> { static constexpr int components = 3; };
-template <>
-struct CheckpointCodec<ParticleMat3> { static constexpr int components = 9; };
-template <>
-struct CheckpointCodec<ParticleSymTensor> { static constexpr int components = 6; };
-#endif
+struct CheckpointCodec<T, std::void_t<decltype(T::SizeAtCompileTime)>> {
+  static constexpr int components = int(T::SizeAtCompileTime);
+};
 
 class CheckpointWriter {
  public:
