@@ -21,6 +21,9 @@
 //                      with F ≥ 10 % of the largest load so far
 //   absorbed energy    W = ∫ F du (trapezoid) to the end, and to the densification onset
 //   SEA                W / m, m the specimen's mass (real density, not mass-scaled)
+//   effective modulus  E* = k H / A: the initial stiffness k times the gauge length H over the
+//                      footprint area A (the homogenised Young's modulus of the specimen)
+// A curve of two rows (one static increment) has only the stiffness, their secant, and E*.
 // Everything SI. A metric that cannot be had is NaN and `notes` says why.
 #pragma once
 #include <limits>
@@ -40,6 +43,9 @@ struct CompressionSettings {
   // none), u_b = half-way from u_a to the first peak, or u_a + 2 % of the gauge length without
   // a first peak (10 % of the travel without a gauge length).
   double fit_from = unset, fit_to = unset;
+  // The same as fractions of the run's final travel (--fit-range 20%:100%), when the lengths
+  // are unset.
+  double fit_from_fraction = unset, fit_to_fraction = unset;
   double plateau_from_strain = 0.20, plateau_to_strain = 0.30;  // ISO 13314
   double first_peak_drop = 0.05;  // relative drop that makes a local maximum a first peak
   // A spike within this travel is the start-up transient, and a maximum exceeded again within
@@ -55,6 +61,7 @@ struct CompressionMetrics {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double transient_end = 0;  // m: travel at which the start-up transient ends (0: none found)
   double stiffness = none, fit_from = none, fit_to = none;  // N/m, m, m
+  double effective_modulus = none;                          // Pa
   double peak_load = none, peak_displacement = none, peak_time = none;
   double first_peak_load = none, first_peak_displacement = none;
   double plateau_load = none, plateau_from = none, plateau_to = none;  // N, m, m
@@ -65,9 +72,11 @@ struct CompressionMetrics {
   std::vector<std::string> notes;
 };
 
-// `gauge_length` (m) turns travel into strain; `mass` (kg) gives SEA. Either may be NaN.
+// `gauge_length` (m) turns travel into strain; `mass` (kg) gives SEA; `footprint_area` (m²)
+// with the gauge length gives E*. Any may be NaN.
 CompressionMetrics compression_metrics(const LoadHistory& history, double gauge_length, double mass,
-                                       const CompressionSettings& settings = {});
+                                       const CompressionSettings& settings = {},
+                                       double footprint_area = std::numeric_limits<double>::quiet_NaN());
 
 // The energy efficiency η·H = ∫₀ᵘ F du / F(u) at each point of a curve ascending in u (m);
 // NaN where F ≤ 0. Exposed for tests and plots.

@@ -27,10 +27,15 @@ double scene_quantity(const toml::node* node, const Dimension& dimension, const 
   }
 }
 
-double length_parameter(const PointSet& points, const std::string& key, const std::string& file) {
+double quantity_parameter(const PointSet& points, const std::string& key, const Dimension& dimension,
+                          const std::string& file) {
   auto it = points.parameters.find(key);
   if (it == points.parameters.end()) return SpecimenFacts::unknown;
-  return parse_quantity(it->second, dimension::length, file, "/points/parameters/" + key);
+  return parse_quantity(it->second, dimension, file, "/points/parameters/" + key);
+}
+
+double length_parameter(const PointSet& points, const std::string& key, const std::string& file) {
+  return quantity_parameter(points, key, dimension::length, file);
 }
 
 }  // namespace
@@ -65,7 +70,7 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
                           facts.deformable_bodies.front() + "', the mass uses each body's density");
 
   // Point files: volumes of the deformable bodies and the geometry parameters.
-  double mass = 0;
+  double mass = 0, volume = 0;
   bool mass_known = !facts.deformable_bodies.empty();
   if (const toml::array* files = doc["points"].as_array()) {
     for (const auto& entry : *files) {
@@ -83,13 +88,15 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
             density = scene_quantity(doc["bodies"][body]["material"]["density"].node(), dimension::density,
                                      "bodies." + body + ".material.density", facts);
           for (size_t i = 0; i < points.size(); ++i)
-            if (points.body[i] == b) mass += points.volume[i] * density;
+            if (points.body[i] == b) mass += points.volume[i] * density, volume += points.volume[i];
         }
         if (facts.cell.empty() && points.parameters.count("cell")) facts.cell = points.parameters.at("cell");
         if (std::isnan(facts.strut_diameter)) facts.strut_diameter = length_parameter(points, "strut_diameter", file);
         if (std::isnan(facts.strut_length)) facts.strut_length = length_parameter(points, "strut_length", file);
         if (std::isnan(facts.gauge_length))
           facts.gauge_length = length_parameter(points, "lattice_zmax", file) - length_parameter(points, "lattice_zmin", file);
+        if (std::isnan(facts.footprint_area))
+          facts.footprint_area = quantity_parameter(points, "footprint_area", dimension::area, file);
       } catch (const InputError& e) {
         facts.notes.push_back(std::string("point file unreadable (") + e.what() + "): no mass or geometry from it");
         mass_known = false;
@@ -100,7 +107,7 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
     facts.notes.push_back("scene.toml: no [[points]] file named");
     mass_known = false;
   }
-  if (mass_known && std::isfinite(mass) && mass > 0) facts.mass = mass;
+  if (mass_known && std::isfinite(mass) && mass > 0) facts.mass = mass, facts.volume = volume;
   if (std::isnan(facts.gauge_length))
     facts.notes.push_back("no lattice_zmin/lattice_zmax in the point files' parameters: no strains");
   return facts;

@@ -21,11 +21,13 @@ struct SpecimenFacts {
   // kg: Σ volume × density over the deformable bodies' points, with the density as given
   // (the real material, not mass-scaled: SEA is a property of the printed part).
   double mass = unknown;
+  double volume = unknown;  // m³: Σ volume over the same points
   // From the point files' /points/parameters.
   std::string cell;                   // "column", "tetrahedral", ...
   double strut_diameter = unknown;    // m (t)
   double strut_length = unknown;      // m (L)
   double gauge_length = unknown;      // m, lattice_zmax − lattice_zmin: the height strain refers to
+  double footprint_area = unknown;    // m², the struts' x–y bounding box (latmpm-lattice)
   std::vector<std::string> point_files;
   std::vector<std::string> notes;     // facts that could not be found, and why
 };

@@ -8,13 +8,9 @@ set -euo pipefail
 case_name=$1 out=$2
 failures=0
 
-# metric FILE LABEL COLUMN: a value of latmpm-post's metrics.csv (header name[unit]).
-metric() {
-  awk -F, -v label="$2" -v name="$3" '
-    /^#/ { next }
-    !h { for (i = 1; i <= NF; i++) { n = $i; sub(/\[.*/, "", n); c[n] = i } h = 1; next }
-    $1 == label { print $c[name] }' "$1"
-}
+source "$(dirname "$0")/../common/post-metric.sh"
+# metric FILE LABEL COLUMN: a value of latmpm-post's metrics.csv or checks.csv.
+metric() { post_metric "$@"; }
 # energy POST_DIR LABEL: "balance strain_at_5pct max_ke_over_se_second_half" of a run, from
 # latmpm-post's checks.csv (docs/post.md "Checks"): the energy balance error |KE + SE - W| / W
 # at the end, the strain where it first passes 5 % ("never"), KE/SE over the second half.
@@ -37,7 +33,7 @@ slender)
   euler=$(metric "$m" slender euler_load)
   # Ripple: root-mean-square of the load about its mean over the last quarter of the travel.
   ripple=$(metric "$out/post-slender/checks.csv" slender load_ripple)
-  ripple_ratio=$(awk "BEGIN { printf \"%.2f\", $ripple / $euler }")
+  ripple_ratio=$(printf '%.2f' "$(metric "$m" slender load_ripple_to_euler)")
   echo "Column t = 0.8 mm, L = 16 mm (L/t = 20), a = 0.02 L, cell 0.2 mm (8 points across), 100 mm/s."
   echo "Expected: finishes (no J <= 0, no runaway); the post-buckling load (mean over the last quarter"
   echo "of the travel) within 15 % of the Euler load (K = 0.5). The Euler load of so slender a column"
