@@ -82,9 +82,9 @@ uint64_t state_digest(const Particles& ps) {
   };
   for (const uint32_t p : by_id) {
     add(ps.position[p].data(), sizeof(Real) * 3);
-    add(ps.velocity[p].data(), sizeof(Real) * 3);
-    add(ps.deformation[p].data(), sizeof(Real) * 9);
-    add(ps.stress[p].data(), sizeof(Real) * 6);
+    add(ps.velocity[p].data(), sizeof(ParticleReal) * 3);
+    add(ps.deformation[p].data(), sizeof(ParticleReal) * 9);
+    add(ps.stress[p].data(), sizeof(ParticleReal) * 6);
   }
   return hash;
 }
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
     // A gentle initial shear-and-swirl velocity so the particles move and stress builds.
     for (size_t p = 0; p < sim.particles().size(); ++p) {
       const Vec3 x = sim.particles().position[p] / (cells * h) - Vec3::Constant(0.5);
-      sim.mutable_particles().velocity[p] = Vec3(x[1], -x[0], 0.2 * x[2]);
+      sim.mutable_particles().velocity[p] = ParticleVec3(x[1], -x[0], 0.2 * x[2]);
     }
     sim.step();  // warm-up: sorting, grid allocation
     const auto start = std::chrono::steady_clock::now();
@@ -150,9 +150,9 @@ int main(int argc, char** argv) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu = cpu_seconds() - cpu_start;
     const double rate = double(sim.particles().size()) * steps / seconds;
-    std::printf("shape %-8s scheme %s threads %d particles %zu steps %d: %.3f s (cpu %.3f s), %.3g particle-updates/s, "
-                "%.0f B/particle + grid %.1f MB (%zu blocks)\n",
-                shape.c_str(), scheme.c_str(), threads, sim.particles().size(), steps, seconds, cpu, rate,
+    std::printf("shape %-8s scheme %s precision %s threads %d particles %zu steps %d: %.3f s (cpu %.3f s), "
+                "%.3g particle-updates/s, %.0f B/particle + grid %.1f MB (%zu blocks)\n",
+                shape.c_str(), scheme.c_str(), precision_name, threads, sim.particles().size(), steps, seconds, cpu, rate,
                 double(sim.particle_memory_bytes()) / sim.particles().size(), sim.grid_memory_bytes() / 1e6,
                 sim.active_grid_blocks());
     if (!dump.empty()) {

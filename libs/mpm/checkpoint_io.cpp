@@ -29,7 +29,7 @@ template <class T>
 std::vector<T> unflatten(const std::vector<double>& d) {
   constexpr int n = CheckpointCodec<T>::components;
   if constexpr (n == 1) {
-    return d;
+    return std::vector<T>(d.begin(), d.end());
   } else {
     std::vector<T> out(d.size() / n);
     for (size_t p = 0; p < out.size(); ++p)
@@ -70,7 +70,7 @@ void CheckpointWriter::rows(const std::string& name, const std::vector<T>& value
   else if constexpr (std::is_same_v<T, uint32_t>)
     file_.write(path(name), std::vector<int64_t>(values.begin(), values.end()), {n});
   else if constexpr (CheckpointCodec<T>::components == 1)
-    file_.write(path(name), values, {n});
+    file_.write(path(name), std::vector<double>(values.begin(), values.end()), {n});
   else
     file_.write(path(name), flatten(values), {n, size_t(CheckpointCodec<T>::components)});
 }
@@ -169,6 +169,12 @@ LATMPM_CHECKPOINT_ROWS(Vec3)
 LATMPM_CHECKPOINT_ROWS(Mat3)
 LATMPM_CHECKPOINT_ROWS(SymTensor)
 LATMPM_CHECKPOINT_ROWS(CpdiParticleDomain)
+#if defined(LATMPM_MIXED_PRECISION)
+LATMPM_CHECKPOINT_ROWS(ParticleReal)
+LATMPM_CHECKPOINT_ROWS(ParticleVec3)
+LATMPM_CHECKPOINT_ROWS(ParticleMat3)
+LATMPM_CHECKPOINT_ROWS(ParticleSymTensor)
+#endif
 LATMPM_CHECKPOINT_ROWS(int32_t)
 LATMPM_CHECKPOINT_ROWS(uint32_t)
 LATMPM_CHECKPOINT_ROWS(uint8_t)

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/checked_read.hpp"  // ValueRange
@@ -27,19 +28,16 @@ namespace latmpm::mpm {
 // 5: blend_dissipation.
 inline constexpr int64_t checkpoint_format_version = 5;
 
-// How a value type is stored: its components per row and the dataset element type.
+// How a value type is stored: its components per row (a real: 1; a fixed-size Eigen matrix —
+// Vec3, Mat3, SymTensor, CpdiParticleDomain and their ParticleReal forms — its coefficients).
+template <class T, class = void>
+struct CheckpointCodec {
+  static constexpr int components = 1;
+};
 template <class T>
-struct CheckpointCodec;
-template <>
-struct CheckpointCodec<Real> { static constexpr int components = 1; };
-template <>
-struct CheckpointCodec<Vec3> { static constexpr int components = 3; };
-template <>
-struct CheckpointCodec<Mat3> { static constexpr int components = 9; };
-template <>
-struct CheckpointCodec<SymTensor> { static constexpr int components = 6; };
-template <>
-struct CheckpointCodec<CpdiParticleDomain> { static constexpr int components = 56; };
+struct CheckpointCodec<T, std::void_t<decltype(T::SizeAtCompileTime)>> {
+  static constexpr int components = int(T::SizeAtCompileTime);
+};
 
 class CheckpointWriter {
  public:
@@ -49,7 +47,8 @@ class CheckpointWriter {
   void integer(const std::string& name, int64_t value);
   void strings(const std::string& name, const std::vector<std::string>& values);
   void integers(const std::string& name, const std::vector<int64_t>& values, size_t columns);
-  // One row per element: Real, Vec3, Mat3 (column-major), SymTensor (Voigt) as doubles;
+  // One row per element: Real, Vec3, Mat3 (column-major), SymTensor (Voigt) and their
+  // ParticleReal forms as doubles;
   // int32, uint8, int64 as they are; uint32 as int64.
   template <class T>
   void rows(const std::string& name, const std::vector<T>& values);

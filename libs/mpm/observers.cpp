@@ -21,7 +21,7 @@ BodiesApartCheck::BodiesApartCheck(const Simulation& sim) {
     const size_t b = size_t(ps.body[p]);
     lo_[b] = lo_[b].cwiseMin(ps.position[p]);
     hi_[b] = hi_[b].cwiseMax(ps.position[p]);
-    pad_[b] = pad_[b].cwiseMax(ps.half_size0[p]);
+    pad_[b] = pad_[b].cwiseMax(ps.half_size0[p].cast<Real>());
   }
 }
 
@@ -173,7 +173,7 @@ Real AverageStressForce::initial_cross_section(const Simulation& sim, const Vec3
   Real lo = std::numeric_limits<Real>::infinity(), hi = -lo, volume0 = 0;
   for (size_t p = 0; p < ps.size(); ++p) {
     if (!counts(sim, p)) continue;
-    const Real along = ps.position[p].dot(a), reach = ps.half_size0[p].dot(a.cwiseAbs());
+    const Real along = ps.position[p].dot(a), reach = ps.half_size0[p].cast<Real>().dot(a.cwiseAbs());
     lo = std::min(lo, along - reach), hi = std::max(hi, along + reach);
     volume0 += ps.volume0[p];
   }
@@ -195,8 +195,8 @@ Real AverageStressForce::operator()(const Simulation& sim) const {
     uint32_t count = 0;
     for (size_t p = begin; p < end; ++p) {
       if (!counts(sim, p)) continue;
-      const Real along = a.dot(to_matrix(ps.stress[p]) * a);
-      const Real v = ps.deformation[p].determinant() * ps.volume0[p];
+      const Real along = a.dot(to_matrix(ps.stress[p]).cast<Real>() * a);
+      const Real v = ps.deformation[p].cast<Real>().determinant() * ps.volume0[p];
       rows.insert(rows.end(), {along * v, v});
       ++count;
     }

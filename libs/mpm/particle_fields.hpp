@@ -36,12 +36,12 @@ struct ParticleField {
 template <class PS, class Visit>
 void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"position"}, ps.position, Vec3(Vec3::Zero()));
-  visit(ParticleField{"velocity"}, ps.velocity, Vec3(Vec3::Zero()));
-  visit(ParticleField{"mass", false, false, FieldBound::non_negative}, ps.mass, Real(0));
-  visit(ParticleField{"volume0", false, false, FieldBound::non_negative}, ps.volume0, Real(0));
-  visit(ParticleField{"deformation"}, ps.deformation, Mat3(Mat3::Identity()));
-  visit(ParticleField{"stress"}, ps.stress, SymTensor(SymTensor::Zero()));
-  visit(ParticleField{"half_size0", false, false, FieldBound::non_negative}, ps.half_size0, Vec3(Vec3::Zero()));
+  visit(ParticleField{"velocity"}, ps.velocity, ParticleVec3(ParticleVec3::Zero()));
+  visit(ParticleField{"mass", false, false, FieldBound::non_negative}, ps.mass, ParticleReal(0));
+  visit(ParticleField{"volume0", false, false, FieldBound::non_negative}, ps.volume0, ParticleReal(0));
+  visit(ParticleField{"deformation"}, ps.deformation, ParticleMat3(ParticleMat3::Identity()));
+  visit(ParticleField{"stress"}, ps.stress, ParticleSymTensor(ParticleSymTensor::Zero()));
+  visit(ParticleField{"half_size0", false, false, FieldBound::non_negative}, ps.half_size0, ParticleVec3(ParticleVec3::Zero()));
   visit(ParticleField{"body", false, false, FieldBound::body_index}, ps.body, int32_t(0));
   visit(ParticleField{"id", false, false, FieldBound::particle_id}, ps.id, uint32_t(0));
   visit(ParticleField{"flags", false, false, FieldBound::byte}, ps.flags, uint8_t(0));

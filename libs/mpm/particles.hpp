@@ -26,13 +26,14 @@ using CpdiParticleDomain = Eigen::Matrix<Real, 7, 8>;
 // every field (resize, permute, checkpoint, memory) goes through that list.
 struct Particles {
   std::vector<Vec3> position;        // m
-  std::vector<Vec3> velocity;        // m/s
-  std::vector<Real> mass;            // kg (density × mass scaling × initial volume)
-  std::vector<Real> volume0;         // m³, initial volume V0 (current volume = J · V0)
-  std::vector<Mat3> deformation;     // F, dimensionless
-  std::vector<SymTensor> stress;     // Cauchy stress, Pa, Voigt xx yy zz yz xz xy
-  std::vector<Vec3> half_size0;      // m, initial GIMP particle-domain half-lengths (a point
-                                     // set's zero half-size becomes cell_size / (2 ppc))
+  // ParticleReal (real.hpp): float in the mixed-precision build, double otherwise.
+  std::vector<ParticleVec3> velocity;        // m/s
+  std::vector<ParticleReal> mass;            // kg (density × mass scaling × initial volume)
+  std::vector<ParticleReal> volume0;         // m³, initial volume V0 (current volume = J · V0)
+  std::vector<ParticleMat3> deformation;     // F, dimensionless
+  std::vector<ParticleSymTensor> stress;     // Cauchy stress, Pa, Voigt xx yy zz yz xz xy
+  std::vector<ParticleVec3> half_size0;      // m, initial GIMP particle-domain half-lengths (a
+                                             // point set's zero half-size becomes cell_size / (2 ppc))
   std::vector<int32_t> body;         // index into Simulation::bodies()
   std::vector<uint32_t> id;          // index in the PointSet the particles came from
   std::vector<uint8_t> flags;        // bit flags below
@@ -53,7 +54,7 @@ struct Particles {
   static constexpr uint8_t held_flag = 2;    // deformable point whose stencil nodes are held at rest
 
   size_t size() const { return position.size(); }
-  Real jacobian(size_t p) const { return deformation[p].determinant(); }
+  Real jacobian(size_t p) const { return deformation[p].cast<Real>().determinant(); }
   Real von_mises_stress(size_t p) const { return von_mises(stress[p]); }
   // Applies the same permutation (new index i takes old index order[i]) to every array.
   void permute(const std::vector<uint32_t>& order);

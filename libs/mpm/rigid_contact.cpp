@@ -97,12 +97,12 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
       Vec3& anchor = ps.contact_anchor[p];
       ContactProbe probe;
       if (k >= 0) {
-        probe = probe_contact(bodies[size_t(k)], states[size_t(k)].displacement, x, ps.half_size0[p]);
+        probe = probe_contact(bodies[size_t(k)], states[size_t(k)].displacement, x, ps.half_size0[p].cast<Real>());
         if (!probe.penetrates) k = -1;  // it left the surface: contact ends
       }
       if (k < 0) {
         for (size_t body : penalty) {
-          probe = probe_contact(bodies[body], states[body].displacement, x, ps.half_size0[p]);
+          probe = probe_contact(bodies[body], states[body].displacement, x, ps.half_size0[p].cast<Real>());
           if (!probe.penetrates) continue;
           // First contact: the attachment point is the closest point of the surface.
           k = int32_t(body);

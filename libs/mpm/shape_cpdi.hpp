@@ -47,7 +47,7 @@ inline CpdiBoxStencil make_cpdi_box_stencil(const Particles& ps, size_t p, Real 
   constexpr int n = CpdiBoxStencil::n;
   const Real inv_h = 1 / h;
   const Vec3& x = ps.position[p];
-  const Mat3& F = ps.deformation[p];
+  const Mat3 F = ps.deformation[p].cast<Real>();
   const CpdiParticleDomain& d = ps.cpdi_domain[p];
   const Mat3 inverse_transpose = F.inverse().transpose();
   CpdiBoxStencil st;

@@ -81,8 +81,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     state_.particles.position[p] = points.position[p];
     state_.particles.volume0[p] = points.volume[p];
     state_.particles.mass[p] = b.material.density * settings_.mass_scaling * points.volume[p];
-    state_.particles.velocity[p] = b.role == BodyRole::driven ? b.velocity : Vec3::Zero();
-    state_.particles.half_size0[p] = points.domain_half_size(p);
+    state_.particles.velocity[p] = (b.role == BodyRole::driven ? b.velocity : Vec3::Zero()).cast<ParticleReal>();
+    state_.particles.half_size0[p] = points.domain_half_size(p).cast<ParticleReal>();
     state_.particles.body[p] = points.body[p];
     state_.particles.id[p] = uint32_t(p);
     if (!b.hold_tag.empty() && points.tags.at(b.hold_tag)[p]) state_.particles.flags[p] |= Particles::held_flag;

@@ -158,7 +158,7 @@ Real ddmp_small_mass(const SolverState& s, StepContext& c) {
     Real density = std::numeric_limits<Real>::infinity();
     for (size_t p = 0; p < ps.size(); ++p)
       if (c.body_info[size_t(ps.body[p])].role == BodyRole::deformable && ps.volume0[p] > 0)
-        density = std::min(density, ps.mass[p] / ps.volume0[p]);
+        density = std::min<Real>(density, ps.mass[p] / ps.volume0[p]);
     density = c.domain.reduce_min(density);
     const Real h = c.settings.cell_size;
     c.ddmp_small_mass = std::isfinite(density) ? c.settings.ddmp_small_mass_fraction * density * h * h * h : 0;
@@ -190,7 +190,7 @@ Real energy_density(const SolverState& s, const StepContext& c, size_t p) {
     constexpr size_t count = history_size<std::decay_t<decltype(m)>>;
     Real history[count > 0 ? count : 1] = {};
     for (size_t k = 0; k < count; ++k) history[k] = ps.history[body.history_columns[k]].values[p];
-    return strain_energy_density(m, ps.deformation[p], ps.stress[p], history);
+    return strain_energy_density(m, ps.deformation[p].cast<Real>(), ps.stress[p].cast<Real>(), history);
   }, body.model);
 }
 
@@ -211,11 +211,11 @@ CarriedState carried_from_particles(const SolverState& s, const StepContext& c) 
   std::vector<Real> mass(nb, 0);
   for (size_t p = 0; p < ps.size(); ++p) {
     const size_t b = size_t(ps.body[p]);
-    mx[b] += ps.mass[p] * ps.position[p];
+    mx[b] += Real(ps.mass[p]) * ps.position[p];
     mass[b] += ps.mass[p];
     if (c.body_info[b].role != BodyRole::deformable) continue;
-    max_speed = std::max(max_speed, ps.velocity[p].norm());
-    initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].squaredNorm() + ps.volume0[p] * energy_density(s, c, p);
+    max_speed = std::max(max_speed, ps.velocity[p].cast<Real>().norm());
+    initial_energy += Real(0.5) * ps.mass[p] * ps.velocity[p].cast<Real>().squaredNorm() + ps.volume0[p] * energy_density(s, c, p);
   }
   carried.max_speed = c.domain.reduce_max(max_speed);
   carried.max_wave_speed = c.domain.reduce_max(max_wave_speed);

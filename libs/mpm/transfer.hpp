@@ -86,8 +86,8 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
   if constexpr (!Shape::uses_half_size) {
     return Vec3::Zero();
   } else {
-    Vec3 l = ps.half_size0[p];
-    if constexpr (Shape::stretches_with_f) l = l.cwiseProduct(ps.deformation[p].diagonal().cwiseAbs());
+    Vec3 l = ps.half_size0[p].template cast<Real>();
+    if constexpr (Shape::stretches_with_f) l = l.cwiseProduct(ps.deformation[p].diagonal().cwiseAbs().template cast<Real>());
     for (int a = 0; a < 3; ++a) l[a] = std::clamp(l[a], Real(1e-3) * h, Shape::max_half * h);
     return l;
   }
@@ -125,8 +125,8 @@ template <class Mode>
   if constexpr (Mode::momentum_lane >= 0)
     for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
   if constexpr (Mode::force) {
-    v = -ps.volume0[p] * ps.deformation[p].determinant();
-    const SymTensor& s = ps.stress[p];
+    v = -Real(ps.volume0[p]) * Real(ps.deformation[p].determinant());
+    const auto& s = ps.stress[p];
     fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
     fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
     fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
@@ -169,7 +169,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         if (Mode::constraint && (rigid || held)) {
           const Real marker = Real(run.body + 1);
           const Vec3& n = bodies[run.body].hold_outward;
-          const Real inward_limit = -Real(0.5) * n.cwiseAbs().dot(ps.half_size0[p]);
+          const Real inward_limit = -Real(0.5) * n.cwiseAbs().dot(ps.half_size0[p].template cast<Real>());
           Real along[3][N];  // (x_node − x_p)·n, per axis part
           for (int a = 0; a < 3; ++a)
             for (int i = 0; i < N; ++i) along[a][i] = held ? ((st.base[a] + i) * h - ps.position[p][a]) * n[a] : Real(0);
@@ -207,7 +207,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
           }
         if constexpr (Mode::force && Shape::smoothed_on_grid) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-          scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p], buffer);
+          scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p].template cast<Real>(), buffer);
         } else if constexpr (Mode::force && Shape::smoothed_gradient) {
           // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
           for (int i = 0; i < N; ++i)
@@ -370,7 +370,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     if (body.role != BodyRole::deformable) {
       // Rigid points move with their prescribed velocity; F and σ stay as they are.
       for (uint32_t p = run.begin; p < run.end; ++p) {
-        if constexpr (Mode::velocity) ps.velocity[p] = body.velocity;
+        if constexpr (Mode::velocity) ps.velocity[p] = body.velocity.template cast<ParticleReal>();
         if constexpr (Mode::position) {
           ps.position[p] += dt * body.velocity;
           track_cell(p, ps.position[p]);
@@ -403,7 +403,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               if constexpr (Mode::velocity)
                 for (int a = 0; a < 3; ++a) v[a][q] = ps.velocity[p][a];
               if constexpr (gradient) {
-                const Mat3& F = ps.deformation[p];
+                const auto& F = ps.deformation[p];
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) f_old[r][c][q] = F(r, c);
                 for (int c = 0; c < 6; ++c) s[c][q] = ps.stress[p][c];
@@ -450,7 +450,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               kinetic += Real(0.5) * m * speed_sq;
               blend_dissipation += Real(0.5) * m * (flip_speed_sq - speed_sq);
               for (int q = 0; q < n; ++q) {
-                ps.velocity[g0 + q] = Vec3(v[0][q], v[1][q], v[2][q]);
+                ps.velocity[g0 + q] = ParticleVec3(v[0][q], v[1][q], v[2][q]);
                 tally.max_speed_sq = std::max(tally.max_speed_sq, speed_sq[q]);
                 if (!std::isfinite(speed_sq[q])) note_fault(tally, ParticleFault::not_finite, g0 + q);
               }
@@ -492,7 +492,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
                 if (!std::isfinite(energy[q])) note_fault(tally, ParticleFault::not_finite, p);
                 min_j = std::min(min_j, J);
-                Mat3& Fp = ps.deformation[p];
+                ParticleMat3& Fp = ps.deformation[p];
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) Fp(r, c) = F[r][c][q];
                 for (int c = 0; c < 6; ++c) ps.stress[p][c] = s[c][q];

@@ -91,6 +91,7 @@ void write_run_status(const std::string& run_dir, const RunOutcome& o, const Pro
   number("peak_memory_mb", o.peak_memory_mb);
   key("tool") << toml_string(p.tool) << "\n";
   key("version") << toml_string(p.version) << "\n";
+  if (!o.precision.empty()) key("precision") << toml_string(o.precision) << "\n";
   key("command") << toml_string(p.command_line) << "\n";
   key("written_utc") << toml_string(Provenance::for_run(p.tool, 0, nullptr).created_utc) << "\n";
 

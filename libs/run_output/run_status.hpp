@@ -14,6 +14,7 @@
 //   updates_per_s            points × steps of this part / its stepping wall time
 //   peak_memory_mb           this part's peak resident memory
 //   tool, version, command, written_utc   provenance
+//   precision = "double"     the solver build's particle precision (double | mixed, mpm/real.hpp)
 #pragma once
 #include <cstdint>
 #include <string>
@@ -34,6 +35,7 @@ struct RunOutcome {
   double stepping_wall_seconds = 0; // all parts
   double updates_per_second = 0;    // this part
   double peak_memory_mb = 0;        // this part
+  std::string precision;            // the solver build's particle precision; "" when unknown
 };
 
 // The process's own measures so far (getrusage): CPU seconds (user + system), peak resident

@@ -276,6 +276,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const double wall = seconds_since(start);
     o.stepping_wall_seconds = wall_before + wall;
     o.updates_per_second = rate_over(wall);
+    o.precision = mpm::precision_name;
     return o;
   };
   if (writer) write_run_status(run_dir, outcome("running", -1, ""), provenance_);

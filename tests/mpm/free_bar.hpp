@@ -19,7 +19,7 @@ inline BarRun run_first_axial_mode(Simulation& sim, Real length, Real v0, Real d
   Real initial = 0;  // ½ Σ m v²: ½ ∫ ρ A v² dx for points at the cells' mid-points
   for (size_t p = 0; p < sim.particles().size(); ++p) {
     const Real v = v0 * std::cos(M_PI * sim.particles().position[p][0] / length);
-    sim.mutable_particles().velocity[p] = Vec3(v, 0, 0);
+    sim.mutable_particles().velocity[p] = ParticleVec3(v, 0, 0);
     initial += 0.5 * sim.particles().mass[p] * v * v;
   }
   std::vector<Real> crossings;

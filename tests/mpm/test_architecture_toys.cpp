@@ -112,7 +112,7 @@ TEST_CASE("A toy observer sees every step and measures the kinetic energy the st
   s.cell_size = h;
   s.gravity = Vec3(0, 0, -9.81);
   Simulation sim(points, {deformable("block", elastic(1e6, 0.3, 1000))}, s);
-  for (auto& v : sim.mutable_particles().velocity) v = Vec3(0.1, 0, 0);
+  for (auto& v : sim.mutable_particles().velocity) v = ParticleVec3(0.1, 0, 0);
   // The toy observer: its own ½ Σ m v² over the particles after each step.
   struct Seen {
     int64_t step;

@@ -61,7 +61,7 @@ class FirstModeBeam {
     s.ddmp_alpha_exponent = alpha.exponent;
     sim_ = std::make_unique<Simulation>(points, std::vector<BodySettings>{deformable("beam", elastic(young, 0, density))}, s);
     for (size_t p = 0; p < sim_->particles().size(); ++p)
-      sim_->mutable_particles().velocity[p] = Vec3(0, 0, v0 / 2 * mode_shape(sim_->particles().position[p][0], length_));
+      sim_->mutable_particles().velocity[p] = ParticleVec3(0, 0, v0 / 2 * mode_shape(sim_->particles().position[p][0], length_));
     sim_->add_observer([this](const Simulation& sm, const StepDiagnostics& d) { observe(sm, d); });
   }
   FirstModeBeam(const FirstModeBeam&) = delete;  // the observer holds `this`

@@ -38,7 +38,7 @@ Vec3 mean_velocity(const Simulation& sim, int body, const std::function<bool(siz
   Vec3 p = Vec3::Zero();
   Real m = 0;
   for (size_t i = 0; i < ps.size(); ++i)
-    if ((body < 0 || ps.body[i] == body) && (!select || select(i))) p += ps.mass[i] * ps.velocity[i], m += ps.mass[i];
+    if ((body < 0 || ps.body[i] == body) && (!select || select(i))) p += Real(ps.mass[i]) * ps.velocity[i].cast<Real>(), m += ps.mass[i];
   return p / m;
 }
 
@@ -67,7 +67,7 @@ Impact bars_meeting(Real h, bool contact, Real v0, Real end_time) {
   Simulation sim(points, {deformable("a", m), deformable("b", m)}, contact_settings(h, contact));
   Particles& ps = sim.mutable_particles();
   for (size_t i = 0; i < ps.size(); ++i)
-    if (ps.body[i] == 0) ps.velocity[i] = Vec3(v0, 0, 0);
+    if (ps.body[i] == 0) ps.velocity[i] = ParticleVec3(v0, 0, 0);
   const Vec3 p0 = mean_velocity(sim, -1);
   Impact out;
   out.momentum_error = Vec3::Zero();
@@ -125,7 +125,7 @@ std::pair<Real, Real> block_sliding(Real h, Real friction, Real g, Real v0, Real
   Simulation sim(points, {slab, deformable("block", m)}, s);
   Particles& ps = sim.mutable_particles();
   for (size_t i = 0; i < ps.size(); ++i)
-    if (ps.body[i] == 1) ps.velocity[i] = Vec3(v0, 0, 0);
+    if (ps.body[i] == 1) ps.velocity[i] = ParticleVec3(v0, 0, 0);
   sim.run_until(t0);
   const Real v_t0 = mean_velocity(sim, 1)[0];
   sim.run_until(t1);
@@ -171,7 +171,7 @@ Fork fork_swinging(Real h, bool contact, int arms, Real v0, Real end) {
   Particles& ps = sim.mutable_particles();
   for (size_t i = 0; i < ps.size(); ++i) {
     const Vec3& x = ps.position[i];
-    if (x[2] > 2e-3) ps.velocity[i] = Vec3(0, (x[0] < 2e-3 ? v0 : -v0) * (x[2] - 2e-3) / 10e-3, 0);
+    if (x[2] > 2e-3) ps.velocity[i] = ParticleVec3(0, (x[0] < 2e-3 ? v0 : -v0) * (x[2] - 2e-3) / 10e-3, 0);
   }
   Fork out;
   auto measure = [&] {

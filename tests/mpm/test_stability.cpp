@@ -59,7 +59,7 @@ TEST_CASE("A collapsing body stops the run with the step, particle and position"
   Simulation sim(cube(h), {deformable("cube", rubber)}, base_settings(h));
   const Vec3 centre = Vec3::Constant(2 * h);
   for (size_t p = 0; p < sim.particles().size(); ++p)
-    sim.mutable_particles().velocity[p] = -1e5 * (sim.particles().position[p] - centre);  // 1/s
+    sim.mutable_particles().velocity[p] = (-1e5 * (sim.particles().position[p] - centre)).cast<ParticleReal>();  // 1/s
   std::string msg;
   try {
     for (int n = 0; n < 5000; ++n) sim.step();
@@ -76,7 +76,7 @@ TEST_CASE("An inverted particle stops the run", "[mpm][stability]") {
   const Real h = 1e-3;
   Simulation sim(cube(h), {deformable("cube", rubber)}, base_settings(h));
   // A particle whose F is nearly singular: the first step's update inverts it.
-  sim.mutable_particles().deformation[5] = Mat3::Identity() * 1e-3;
+  sim.mutable_particles().deformation[5] = ParticleMat3::Identity() * ParticleReal(1e-3);
   sim.mutable_particles().deformation[5](0, 0) = -1e-3;
   CHECK_THAT(message_of<NumericalError>([&] { sim.step(); }), Catch::Matchers::Contains("J = ") && Catch::Matchers::Contains("particle 5"));
 }

@@ -50,10 +50,10 @@ TEST_CASE("Particles-to-grid and grid-to-particles conserve mass and momentum", 
   Real mass = 0;
   Vec3 momentum = Vec3::Zero();
   for (size_t p = 0; p < sim.particles().size(); ++p) {
-    Vec3& v = sim.mutable_particles().velocity[p];
-    v = Vec3(u(rng), u(rng), u(rng)) + Vec3(1, -2, 0.5);
+    ParticleVec3& v = sim.mutable_particles().velocity[p];
+    v = (Vec3(u(rng), u(rng), u(rng)) + Vec3(1, -2, 0.5)).cast<ParticleReal>();
     mass += sim.particles().mass[p];
-    momentum += sim.particles().mass[p] * v;
+    momentum += Real(sim.particles().mass[p]) * v.cast<Real>();
   }
   INFO("shape " << to_string(shape));
   SimulationTestAccess::particles_to_grid(sim);
@@ -76,7 +76,7 @@ TEST_CASE("Particles-to-grid and grid-to-particles conserve mass and momentum", 
   SimulationTestAccess::grid_to_particles(pic_sim, 1e-6);
   Vec3 after = Vec3::Zero();
   for (size_t p = 0; p < pic_sim.particles().size(); ++p)
-    after += pic_sim.particles().mass[p] * pic_sim.particles().velocity[p];
+    after += Real(pic_sim.particles().mass[p]) * pic_sim.particles().velocity[p].cast<Real>();
   CHECK((after - grid_momentum).norm() <= 1e-12 * momentum.norm());
 }
 
@@ -90,16 +90,16 @@ TEST_CASE("A rigid translation is exact for every shape function and update sche
   s.scheme = scheme;
   s.flip_blend = 0.9;
   Simulation sim(points, block_body(), s);
-  for (auto& v : sim.mutable_particles().velocity) v = velocity;
+  for (auto& v : sim.mutable_particles().velocity) v = velocity.cast<ParticleReal>();
   for (int n = 0; n < 40; ++n) sim.step();
   INFO("shape " << to_string(shape) << ", scheme " << to_string(scheme));
   const Particles& ps = sim.particles();
   Real position_error = 0, velocity_error = 0, strain_error = 0, stress = 0;
   for (size_t p = 0; p < ps.size(); ++p) {
     position_error = std::max(position_error, (ps.position[p] - points.position[ps.id[p]] - sim.time() * velocity).norm());
-    velocity_error = std::max(velocity_error, (ps.velocity[p] - velocity).norm());
-    strain_error = std::max(strain_error, (ps.deformation[p] - Mat3::Identity()).norm());
-    stress = std::max(stress, ps.stress[p].norm());
+    velocity_error = std::max(velocity_error, (ps.velocity[p].cast<Real>() - velocity).norm());
+    strain_error = std::max(strain_error, (ps.deformation[p].cast<Real>() - Mat3::Identity()).norm());
+    stress = std::max<Real>(stress, ps.stress[p].norm());
   }
   CHECK(sim.time() * velocity.norm() > h);
   CHECK(position_error < 1e-12 * h * 40);
@@ -143,7 +143,7 @@ TEST_CASE("A uniform-strain patch mapped through P2G and G2P is exact away from 
   const PointSet points = block_points(h);
   Simulation sim(points, block_body(), settings_for(shape, h));
   for (size_t p = 0; p < sim.particles().size(); ++p)
-    sim.mutable_particles().velocity[p] = A * sim.particles().position[p];
+    sim.mutable_particles().velocity[p] = (A * sim.particles().position[p]).cast<ParticleReal>();
   SimulationTestAccess::particles_to_grid(sim);
   SimulationTestAccess::grid_update(sim, 1e-7);
   const auto g = SimulationTestAccess::gather_from_grid(sim);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <toml++/toml.h>
 
+#include "mpm/real.hpp"  // precision_name
 #include "solve_tool.hpp"
 #include "tiny_column.hpp"
 
@@ -70,6 +71,8 @@ TEST_CASE("A finished run records its end, steps, time and cost in status.toml",
   CHECK(number(status, "cpu_s") > 0);
   CHECK(number(status, "peak_memory_mb") > 1);
   CHECK(text(status, "tool") == "latmpm-solve");
+  // The build's particle precision (mpm/real.hpp), which the tool under test was built with.
+  CHECK(text(status, "precision") == mpm::precision_name);
   CHECK_THAT(text(status, "command"), Catch::Contains("-o " + run.string()));
 }
 
