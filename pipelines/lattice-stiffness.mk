@@ -6,10 +6,9 @@
 #   (rigid plates: the printed base omitted, the top plate trimmed to one cell under a rigid
 #   platen). The runs are the rows of pipelines/lattice-stiffness/cases-{quick,paper}.txt:
 #   per lattice "initial" (linear elastic, one increment of 0.1 mm: k, and E* = k H / A with
-#   H the height between the plates and A the footprint, both computed by latmpm-post from
-#   the parameters latmpm-lattice records) and "path" (neo-Hookean, increments to 20 mm /
-#   8 mm: where the true tangent stops being positive definite, the load falls or Newton
-#   fails).
+#   H the height between the plates and A the footprint, both computed by latmpm-post from the
+#   parameters latmpm-lattice records) and "path" (neo-Hookean, increments to 20 mm / 8 mm:
+#   where the true tangent stops being positive definite, the load falls or Newton fails).
 # make lattice-stiffness-initial [QUICK=1]: only the initial stiffness (seconds per lattice).
 # Results in results/lattice-stiffness/{paper,quick}/: stiffness.md (table), stiffness.csv,
 # stiffness.png, initial/ (latmpm-post over the initial runs), run-<lattice>-{initial,path}/

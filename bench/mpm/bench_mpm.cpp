@@ -1,12 +1,16 @@
 // Solver throughput: particle-updates per second (particles × steps / wall seconds) of the
 // explicit MPM step on an elastic block, per shape function and thread count.
 //   bench_mpm [--cells N] [--steps S] [--threads T] [--shape NAME] [--scheme NAME] [--ddmp-on-grid 0|1]
-//             [--digest 1] [--dump FILE]
+//             [--digest 1] [--dump FILE] [--contact-fields F]
 // Prints one line per run; bench/mpm/run.sh runs the set recorded in docs/benchmarks.md.
 // --digest 1 adds a hash of the final particle state (positions, velocities, F, σ, in the
 // particles' original order): two builds that print the same digest computed bit-identical
 // results, the check a kernel change that claims to keep the rounding must pass. --dump FILE
 // writes the same state as raw doubles (21 per particle, id order) to compare two builds.
+// --contact-fields F (F ≥ 1) runs with multi-field grid contact (mpm/field_contact.hpp):
+// the block cut into F slabs along x, each a field (slabs 1.. tagged as groups, slab 0 the
+// body's rest), every interface between slabs 1.. a frictionless contact plane: the cost of
+// the contact step against one field (docs/contact.md, "Cost").
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -93,6 +97,7 @@ int main(int argc, char** argv) {
   bool ddmp_on_grid = true;  // Settings::ddmp_on_grid; 0: DDMP's per-particle modified gradient
   bool digest = false;
   std::string dump;
+  int contact_fields = 0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--cells") cells = std::atoi(value.c_str());
@@ -103,13 +108,21 @@ int main(int argc, char** argv) {
     else if (key == "--ddmp-on-grid") ddmp_on_grid = value != "0";
     else if (key == "--digest") digest = value != "0";
     else if (key == "--dump") dump = value;
+    else if (key == "--contact-fields") contact_fields = std::atoi(value.c_str());
     else {
       std::fprintf(stderr, "bench_mpm: unknown option %s\n", key.c_str());
       return 1;
     }
   }
   const double h = 1e-3;
-  const PointSet points = elastic_block(cells, h, 2);
+  PointSet points = elastic_block(cells, h, 2);
+  std::vector<std::string> groups;
+  for (int k = 1; k < contact_fields; ++k) {  // slab k: x in [k, k + 1) · cells h / F
+    groups.push_back("slab" + std::to_string(k));
+    auto& mask = points.tags[groups.back()];
+    mask.resize(points.size());
+    for (size_t p = 0; p < points.size(); ++p) mask[p] = int(points.position[p][0] / (cells * h) * contact_fields) == k;
+  }
   for (const auto& shape : shapes) {
     Settings s;
     s.cell_size = h;
@@ -117,6 +130,8 @@ int main(int argc, char** argv) {
     s.scheme = parse_update_scheme(scheme);
     s.threads = threads;
     s.ddmp_on_grid = ddmp_on_grid;
+    s.field_contact.enabled = contact_fields > 0;
+    s.field_contact.groups = groups;
     BodySettings body;
     body.name = "block";
     body.material.young_modulus = 10e6;

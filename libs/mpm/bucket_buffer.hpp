@@ -28,6 +28,7 @@ struct BucketBuffer {
   std::array<int, 3> origin{};  // node coordinates of buffer node (0, 0, 0)
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
   DdmpAlphaCache ddmp_alpha_cache;  // DDMP on the grid only: α per point for this pass
+  int field = -1;  // grid contact (field_contact.hpp): the velocity field this pass takes; −1: all
   // DDMP on the grid only (ddmp_grid.hpp): ddmp_values per node, allocated on first use.
   std::vector<Real> ddmp;
 

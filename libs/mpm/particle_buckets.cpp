@@ -52,7 +52,10 @@ void ParticleBuckets::sort(Particles& particles, Real cell_size) {
   const size_t n = particles.size();
   const Real inv_h = 1 / cell_size;
   keys_.resize(n);
-  for (size_t p = 0; p < n; ++p) keys_[p] = sort_key(cell_of(particles.position[p], inv_h), particles.body[p]);
+  // With grid contact a run is one (body, field): body · 32 + field in the key's body bits.
+  const bool fields = !particles.contact_field.empty();
+  auto group = [&](size_t p) { return fields ? particles.body[p] * 32 + particles.contact_field[p] : particles.body[p]; };
+  for (size_t p = 0; p < n; ++p) keys_[p] = sort_key(cell_of(particles.position[p], inv_h), group(p));
   order_.resize(n);
   std::iota(order_.begin(), order_.end(), 0u);
   std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) {
@@ -79,7 +82,8 @@ void ParticleBuckets::sort(Particles& particles, Real cell_size) {
     const uint64_t bucket_key = keys_[p] >> bucket_shift;
     while (p < n && (keys_[p] >> bucket_shift) == bucket_key) {
       BodyRun run{particles.body[p], uint32_t(p), 0};
-      while (p < n && (keys_[p] >> bucket_shift) == bucket_key && particles.body[p] == run.body) ++p;
+      const int run_group = group(p);
+      while (p < n && (keys_[p] >> bucket_shift) == bucket_key && group(p) == run_group) ++p;
       run.end = uint32_t(p);
       runs_.push_back(run);
     }

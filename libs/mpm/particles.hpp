@@ -43,6 +43,9 @@ struct Particles {
   std::vector<Vec3> contact_anchor;
   // CPDI1 domains (shape_cpdi.hpp), empty unless the run's shape function is cpdi1.
   std::vector<CpdiParticleDomain> cpdi_domain;
+  // Grid contact's velocity field of each point (field_contact.hpp), empty unless the run
+  // has multi-field contact.
+  std::vector<uint8_t> contact_field;
   // Material history, one column per variable the run's models declare (material_history.hpp).
   std::vector<HistoryColumn> history;
 

@@ -27,6 +27,7 @@ void validate(const Settings& s, const std::string& where) {
   if (s.threads < 0) throw InputError(where, "threads", "must not be negative (0 = all cores)");
   if (!(s.min_jacobian >= 0 && s.min_jacobian < 1)) throw InputError(where, "min_jacobian", "must lie in [0, 1)");
   if (!positive(s.runaway_energy_factor)) throw InputError(where, "runaway_energy_factor", "must be positive");
+  validate(s.field_contact, s.shape_function, s.scheme, where);
 }
 
 }  // namespace latmpm::mpm

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/field_contact_settings.hpp"
 #include "mpm/real.hpp"
 #include "mpm/shape_ddmp.hpp"
 #include "mpm/shape_function_kind.hpp"
@@ -75,6 +76,9 @@ struct Settings {
   // A particle whose volume ratio J = det F falls to this or below is inverted or crushed
   // beyond anything an elastic solid survives (1 % of its volume): the run stops.
   Real min_jacobian = 0.01;
+
+  // Multi-field grid contact between bodies and point groups (field_contact.hpp); off: one field.
+  FieldContactSettings field_contact;
 };
 
 // Throws InputError(where, field, ...) for a non-positive cell size, cfl outside (0, 1],

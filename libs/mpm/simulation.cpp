@@ -124,6 +124,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
 
+  if (settings_.field_contact.enabled)  // points in field order: Particles::contact_field
+    context_->grid_fields = make_contact_fields(settings_.field_contact, settings_.mass_scaling, points, bodies_, state_.particles.contact_field, where);
   if (settings_.shape_function == ShapeFunctionKind::cpdi1)
     set_cpdi_domains(state_.particles, points, bodies_, settings_.cell_size, where);
   if (settings_.shape_function == ShapeFunctionKind::cpgimp && settings_.scheme == UpdateScheme::usl)
@@ -176,6 +178,8 @@ void Simulation::add_rigid_body(const RigidBodySettings& body) {
   for (const auto& b : rigid_bodies_)
     if (b.name == body.name) throw InputError(where, "", "is given twice");
   validate(body, "scene");
+  if (body.coupling == RigidCoupling::penalty && std::holds_alternative<ContactFields>(context_->grid_fields))
+    throw InputError(where, "contact", "penalty contact with rigid bodies does not run with grid contact yet; use no-slip");
   check_body_speed(body.velocity.norm(), "scene", where + ".velocity");
   rigid_bodies_.push_back(body);
   RigidBodyState state;

@@ -78,6 +78,10 @@ class SparseGrid {
   static Vec3 node_position(int i, int j, int k, Real h) { return Vec3(i * h, j * h, k * h); }
 
   size_t memory_bytes() const;
+  // Exchanges the node lanes with `other` (grid contact's per-field lanes, field_contact.hpp,
+  // take the grid's place for a field's passes); `other` must hold as many Reals.
+  void swap_lanes(NodeStorage& other) { data_.swap(other); }
+  size_t lane_values() const { return data_.size(); }
 
  private:
   std::vector<uint64_t> keys_;

@@ -19,6 +19,7 @@
 #include "mpm/ddmp_grid.hpp"
 #include "mpm/ddmp_small_mass.hpp"
 #include "mpm/domain.hpp"
+#include "mpm/field_contact.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/rigid_contact.hpp"
 #include "mpm/settings.hpp"
@@ -71,6 +72,10 @@ struct StepContext {
   std::vector<ContactMaterial> contact_materials;  // per point body
   ContactForces contact;                           // of the current step, in particle order
   Real contact_rate_sq = 0;                        // largest κ_p/m_p, 1/s²
+  // The grid's velocity fields (field_contact.hpp): one, or one per contact field; then
+  // the field the scatter and gather passes take (−1: every point).
+  GridFields grid_fields;
+  int active_field = -1;
   // The carried speeds and energies must be taken from the particles again (at the start,
   // after mutable_particles() or a rigid body was added).
   bool refresh_needed = true;
@@ -90,7 +95,7 @@ void with_solver_shape(const Settings& settings, F&& f) {
 }
 // DDMP on the grid: its smoothed force reaches one node beyond the particles' cells.
 template <class Shape>
-inline constexpr int grid_halo = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
+inline constexpr int grid_halo = Shape::smoothed_on_grid ? 1 : 0;
 
 // --- Stages without a shape function (step_stages.cpp) ------------------------------------
 
@@ -169,7 +174,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
         for (int k = 0; k < 4; ++k)
           c.tables[bi][(i * 4 + j) * 4 + k] = s.grid.find(first[0] + i, first[1] + j, first[2] + k);
   }
-  if constexpr (has_smoothed_gradient<Shape>::value) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
+  if constexpr (Shape::smoothed_gradient) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
   clear_grid(s.grid);
   s.grid_holds_velocity = false;
   c.tallies.assign(list.size(), BucketTally{});
@@ -179,10 +184,10 @@ void prepare_grid(SolverState& s, StepContext& c) {
 template <class Shape, class Mode>
 void scatter(SolverState& s, StepContext& c) {
   const auto& list = s.buckets.buckets();
-  constexpr bool nodal_stress = Mode::force && has_grid_smoothed_gradient<Shape>::value;
+  constexpr bool nodal_stress = Mode::force && Shape::smoothed_on_grid;
   if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   for (int ci = 0; ci < 8; ++ci) {
     const auto& colour = s.buckets.colours()[size_t(ci)];
     // Buckets of one colour are two buckets apart: their boxes never overlap.
@@ -190,6 +195,8 @@ void scatter(SolverState& s, StepContext& c) {
       BucketBuffer& buffer = c.buffers.local();
       for (size_t k = r.begin(); k < r.end(); ++k) {
         const Bucket& b = list[colour[k]];
+        if (c.active_field >= 0 && !bucket_has_field(b, s.buckets.runs(), s.particles, c.active_field)) continue;
+        buffer.field = c.active_field;
         buffer.attach(b);
         buffer.ddmp_alpha = c.ddmp_partition();
         buffer.ddmp_alpha_cache = alpha_cache;
@@ -204,34 +211,42 @@ void scatter(SolverState& s, StepContext& c) {
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
   // A pass that marks constraints visits every point, rigid ones too: α is then complete.
-  if constexpr (has_grid_smoothed_gradient<Shape>::value && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
+  if constexpr (Shape::smoothed_on_grid && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }
 }
 
+// The gather's particle passes, their bucket tallies into `tallies` (one per bucket).
 template <class Shape, class Mode>
-void gather(SolverState& s, StepContext& c, Real dt) {
+void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketTally>& tallies) {
   const auto& list = s.buckets.buckets();
   const Settings& st = c.settings;
   const GatherParameters parameters{st.cell_size, dt, st.flip_blend, st.gravity, st.min_jacobian};
-  constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && has_grid_smoothed_gradient<Shape>::value;
+  constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && Shape::smoothed_on_grid;
   if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(s.grid, Mode::gradient_lane, st.cell_size, c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketBuffer& buffer = c.buffers.local();
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
       const Bucket& b = list[bi];
+      if (c.active_field >= 0 && !bucket_has_field(b, s.buckets.runs(), s.particles, c.active_field)) continue;
+      buffer.field = c.active_field;
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
       buffer.ddmp_alpha_cache = alpha_cache;
       copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,
-                                 buffer, c.tallies[bi], &c.run_tallies[b.run_begin]);
+                                 buffer, tallies[bi], &c.run_tallies[b.run_begin]);
     }
   });
+}
+
+template <class Shape, class Mode>
+void gather(SolverState& s, StepContext& c, Real dt) {
+  gather_buckets<Shape, Mode>(s, c, dt, c.tallies);
   absorb_tallies(s, c, Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
 }
 
@@ -241,7 +256,7 @@ void gather(SolverState& s, StepContext& c, Real dt) {
 // neighbours (`find`: decide which nodes those are, from the mass just mapped).
 template <class Shape>
 void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool find) {
-  if constexpr (has_smoothed_gradient<Shape>::value) {
+  if constexpr (Shape::smoothed_gradient) {
     if (find) find_ddmp_small_mass_nodes(s.grid, ddmp_small_mass(s, c), c.ddmp_nodal);
     move_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
   }
@@ -249,7 +264,7 @@ void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool fin
 // After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
 template <class Shape>
 void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
-  if constexpr (has_smoothed_gradient<Shape>::value)
+  if constexpr (Shape::smoothed_gradient)
     spread_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
 }
 
@@ -264,7 +279,7 @@ void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
   using Weights =
-      std::conditional_t<has_smoothed_gradient<Shape>::value || uses_domain_vertices<Shape>::value, LinearShape, Shape>;
+      std::conditional_t<Shape::smoothed_gradient || Shape::uses_domain_vertices, LinearShape, Shape>;
   constexpr int N = Weights::nodes_per_axis;
   const Real h = c.settings.cell_size;
   for (uint32_t p : c.contact.touching) {
@@ -334,9 +349,11 @@ void step_usf(SolverState& s, StepContext& c, Real dt) {
   gather<Shape, GatherMotion>(s, c, dt);
 }
 
-// One step of the settings' scheme with the settings' shape function, on the context's threads.
+// One step of the settings' scheme with the settings' shape function, on the context's threads;
+// with grid contact, its step (field_contact.hpp).
 inline void step_scheme(SolverState& s, StepContext& c, Real dt) {
   c.arena.execute([&] {
+    if (auto* fields = std::get_if<ContactFields>(&c.grid_fields)) return step_with_field_contact(s, c, *fields, dt);
     with_solver_shape(c.settings, [&](auto shape) {
       using Shape = decltype(shape);
       switch (c.settings.scheme) {

@@ -226,6 +226,10 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::s
   if (root.has("rigid_bodies")) read_rigid_bodies(root.table("rigid_bodies"), s);
   read_checkpoint(root.table_or_empty("checkpoint"), s);
   read_solver(root.table_or_empty("solver"), s);
+  if (auto contact = root.optional_table("contact")) {
+    scene_toml::read(*contact, s.settings.field_contact);
+    contact->finish();
+  }
   root.finish();
   check_consistency(s);
   if (s.quasi_static_load_error > 0) {

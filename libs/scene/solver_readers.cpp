@@ -134,4 +134,25 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }
 
+void read(TableReader& contact, mpm::FieldContactSettings& s) {
+  s.enabled = true;
+  s.friction = contact.number("friction", s.friction);
+  if (!(s.friction >= 0)) contact.fail("friction", "must be zero or positive (a Coulomb coefficient)");
+  s.fill = contact.number("fill", s.fill);
+  if (!(s.fill >= 0 && s.fill <= 1)) contact.fail("fill", "must lie in [0, 1] (a fraction of the node's volume h^3)");
+  // Point tags, comma-separated: each tagged part of a body is a field of its own.
+  std::string list = contact.text("groups", "");
+  s.groups.clear();
+  for (size_t start = 0; start <= list.size();) {
+    size_t end = list.find(',', start);
+    if (end == std::string::npos) end = list.size();
+    std::string tag = list.substr(start, end - start);
+    tag.erase(0, tag.find_first_not_of(' '));
+    tag.erase(tag.find_last_not_of(' ') + 1);
+    if (!tag.empty()) s.groups.push_back(tag);
+    else if (end < list.size()) contact.fail("groups", "has an empty tag name ('" + list + "')");
+    start = end + 1;
+  }
+}
+
 }  // namespace latmpm::scene_toml

@@ -31,4 +31,7 @@ void read(TableReader& body, mpm::RigidBodySettings& settings);
 // predictor, stabilisation.
 void read(TableReader& solver, statics::StaticSettings& settings);
 
+// [contact]: multi-field grid contact (mpm/field_contact.hpp): friction, point-tag groups.
+void read(TableReader& contact, mpm::FieldContactSettings& s);
+
 }  // namespace latmpm::scene_toml

@@ -146,3 +146,39 @@ TEST_CASE("A fixed rigid body given a velocity, a mass or gravity is an error na
     CHECK_THAT(e.problem(), Catch::Contains("fixed"));
   }
 }
+
+// [contact]: multi-field grid contact between bodies and point groups (mpm/field_contact.hpp).
+TEST_CASE("The contact table turns on grid contact with its friction, groups and volume check", "[scene][contact]") {
+  const Scene none = parse(test::column_scene_head("{ time = \"1ms\" }"));
+  CHECK_FALSE(none.settings.field_contact.enabled);
+
+  const Scene s = parse(test::column_scene_head("{ time = \"1ms\" }") +
+                        "[contact]\nfriction = 0.3\ngroups = \"left, right\"\nfill = 0.8\n");
+  const mpm::FieldContactSettings& c = s.settings.field_contact;
+  CHECK(c.enabled);
+  CHECK(c.friction == 0.3);
+  CHECK(c.groups == std::vector<std::string>{"left", "right"});
+  CHECK(c.fill == 0.8);
+  const Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
+  CHECK(again.settings.field_contact.groups == c.groups);
+  CHECK(again.settings.field_contact.friction == c.friction);
+
+  struct Case {
+    std::string line, key, problem;
+  };
+  auto bad = GENERATE(values<Case>({
+      {"friction = -0.1", "contact.friction", "zero or positive"},
+      {"fill = 1.5", "contact.fill", "[0, 1]"},
+      {"groups = \"a,,b\"", "contact.groups", "empty tag"},
+      {"frction = 0.1", "contact.frction", "unknown key"},
+  }));
+  CAPTURE(bad.line);
+  try {
+    parse(test::column_scene_head("{ time = \"1ms\" }") + "[contact]\n" + bad.line + "\n");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.where() == "scene.toml:11");
+    CHECK(e.field() == bad.key);
+    CHECK_THAT(e.problem(), Catch::Contains(bad.problem));
+  }
+}
