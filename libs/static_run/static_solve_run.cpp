@@ -179,7 +179,10 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   s.points = problem.point_count();
   s.unknowns = problem.dof_count();
   s.travel = path.last_stable_travel;
-  s.status = !path.ended ? "finished" : (path.end_reason == "tangent not positive definite" ? "unstable" : "not converged");
+  // A non-positive-definite tangent and a load maximum are both ends of a stable path (the
+  // run's answer); only a Newton failure is a failed run.
+  const bool instability = path.end_reason == "tangent not positive definite" || path.end_reason == "load maximum";
+  s.status = !path.ended ? "finished" : instability ? "unstable" : "not converged";
   if (path.ended) {
     s.end_travel = path.end_travel;
     s.end_load = path.end_load;

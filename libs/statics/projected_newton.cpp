@@ -63,10 +63,11 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       break;
     }
 
-    // Newton direction (step 2–3): near the solution the true Hessian where it is
-    // positive definite (quadratic convergence), otherwise the projected one.
+    // Newton direction (step 2–3): the true Hessian where it is positive definite
+    // (quadratic convergence), otherwise the projected one.
     const bool try_true = !boundary_moves && residual <= options.true_tangent_below &&
-                          residual <= options.retry_true_tangent_after * true_tangent_failed_at;
+                          (std::isinf(true_tangent_failed_at) ||
+                           residual <= options.retry_true_tangent_after * true_tangent_failed_at);
     // An iterative solver builds its preconditioner for an indefinite true tangent too: its
     // direction is then taken only when it solved and descends, else the projected one.
     bool factorized = false;
@@ -135,7 +136,6 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     }
     u += alpha * d;
     report.step.push_back(alpha);
-
   }
   report.min_jacobian = problem.min_jacobian(u);
   return report;

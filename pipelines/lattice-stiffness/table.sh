@@ -57,8 +57,8 @@ mv "$csv.tmp" "$csv"
 ended=$(awk -F, 'NR > 1 && $4 != "" { n++ } END { print n + 0 }' "$csv")
 panel2=""
 if [ "$ended" -gt 0 ]; then
-  panel2='set ylabel "load (N)"; set title "first instability load (static path end)";
-plot "'"$csv"'" every ::1 using 0:4:xtic(1) with boxes notitle'
+  panel2='set ylabel "load (N)"; set title "first instability (static path end): load, travel";
+plot "'"$csv"'" every ::1 using 0:4:xtic(1) with boxes notitle, "" every ::1 using 0:4:(sprintf("%.1f mm", $5)) with labels offset 0,0.7 font ",9" notitle'
 fi
 gnuplot <<PLOT
 set terminal pngcairo size $([ "$ended" -gt 0 ] && echo 900 || echo 450),420
