@@ -8,8 +8,11 @@
 # its row, its point file or its scene changed. RUN/done is the stamp, touched by
 # pipelines/common/solve-case.sh when the solver's RUN/status.toml says the run ended (the
 # status file is written by latmpm-solve at the end of every run, failed ones included).
-# The tools and solve-case.sh are order-only prerequisites: a rebuilt solver does not rerun
-# finished cases (delete run-<case>/ to rerun one).
+# RUN.args ends in a comment line naming the solver's version (latmpm-solve --version, the
+# version status.toml records): a run made by another build of the solver is redone, so a
+# stale run never comes back without the new build's series columns. Within one build (a
+# "-dirty" version) a rebuilt solver does not rerun finished cases (delete run-<case>/ to rerun
+# one); the other tools and solve-case.sh are order-only prerequisites.
 #
 # CASES="name ..." (make <experiment> CASES=T2P30-E10) makes only the named cases and the
 # summaries over them.
@@ -23,6 +26,8 @@ pipeline_space := $(subst ,, )
 # Capabilities are asked of the solver, once per make and only when a table is read: the
 # shape functions it has (`latmpm-solve --list shapes`; an older solver without --list: ugimp).
 LATMPM_SHAPES = $(eval LATMPM_SHAPES := $$(or $$(shell $(BIN)/latmpm-solve --list shapes 2>/dev/null),ugimp))$(LATMPM_SHAPES)
+# The solver's version as one word, the last line of every RUN.args (asked once per make).
+LATMPM_SOLVER_STAMP = $(eval LATMPM_SOLVER_STAMP := \#solver=$$(subst $$(pipeline_space),_,$$(shell $(BIN)/latmpm-solve --version 2>/dev/null)))$(LATMPM_SOLVER_STAMP)
 # DDMP (paper A Eq. 4-7) rows run in every experiment, QUICK=1 included (docs/solver.md, "DDMP";
 # DDMP=0 leaves them out).
 DDMP ?= 1
@@ -63,7 +68,8 @@ endef
 # The run of one row of TABLE into OUT (ALLOW_FAILURE = 1: a numerical failure is an outcome).
 define pipeline_case_rules
 $(1)/run-$(call pipeline_field,$(3),1).args: pipeline-args-force
-	@mkdir -p $$(@D) && bash $(PIPELINE_COMMON)/case-table.sh args $(2) $(call pipeline_field,$(3),1) $(1) > $$@.new && \
+	@mkdir -p $$(@D) && { bash $(PIPELINE_COMMON)/case-table.sh args $(2) $(call pipeline_field,$(3),1) $(1) && \
+	  echo '$$(LATMPM_SOLVER_STAMP)'; } > $$@.new && \
 	  if cmp -s $$@.new $$@; then rm -f $$@.new; else mv $$@.new $$@; fi
 $(1)/run-$(call pipeline_field,$(3),1)/done: $(1)/run-$(call pipeline_field,$(3),1).args \
     $(1)/$(call pipeline_field,$(3),2) $(call pipeline_field,$(3),3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh
@@ -79,7 +85,7 @@ pipeline_table = $(foreach r,$(3),$(if $(filter -,$(call pipeline_field,$r,3)),,
 # (pipelines/stl-part.mk adds its further point files to the stamp's old name, wall_time.txt:
 # they are made first, order-only, until it names RUN_DIR/done.)
 define pipeline_run
-$(call pipeline_args,$(1).args,$(3) --set points.0.file=$(2) $(4))
+$(call pipeline_args,$(1).args,$(3) --set points.0.file=$(2) $(4) '$$(LATMPM_SOLVER_STAMP)')
 $(1)/done: $(1).args $(2) $(3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh $(1)/wall_time.txt
 	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1) $$(SOLVE_THREADS) $(5)
 $(1)/wall_time.txt: ;

@@ -47,8 +47,8 @@ $(IM_OUT)/geometry.h5: | $(BIN)/latmpm-lattice
 $(IM_OUT)/points.h5: $(IM_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(IM_CELL) --ppc 2 --quiet -o $@
 
-$(IM_OUT)/impact-%.csv: $(IM_OUT)/run-%/done $(IM_SRC)/extract.sh
-	bash $(IM_SRC)/extract.sh $(<D) $@
+$(IM_OUT)/impact-%.csv: $(IM_OUT)/run-%/done $(IM_OUT)/summary.md $(IM_SRC)/extract.sh
+	bash $(IM_SRC)/extract.sh $(<D) $(IM_OUT)/curves/$*.load_time.csv $@
 
 $(eval $(call pipeline_post,$(IM_OUT),$(call pipeline_label_runs,$(IM_OUT),$(IM_SELECTED)),--kind impact,Impact of a rigid flyer on T2P30 (paper A Sec. 6),$(IM_SRC)/notes.md))
 

@@ -2,12 +2,13 @@
 # effective modulus and first instability load from the static solver (docs/statics.md).
 #   T1P20 T1P30 T1P40 T2P20 T2P30 T2P40 at the lattice-compression sizes (5x5x5 cells, 3 mm
 #   printed plates, cell 0.64 mm, 2 points per cell per direction; QUICK=1: 2x2x2 cells, 2 mm
-#   plates, cell 1 mm), uGIMP, E = 10 MPa, nu = 0.4, the lattice-compression scene. The runs
-#   are the rows of pipelines/lattice-stiffness/cases-{quick,paper}.txt: per lattice
-#   "initial" (linear elastic, one increment of 0.1 mm: k, and E* = k H / A with H the height
-#   between the plates and A the footprint, both computed by latmpm-post from the parameters
-#   latmpm-lattice records) and "path"
-#   (neo-Hookean, increments to 20 mm / 4 mm: where the load falls or Newton fails).
+#   plates, cell 1 mm), uGIMP, E = 10 MPa, nu = 0.4, the scene of `make lattice-compression`
+#   (rigid plates: the printed base omitted, the top plate trimmed to one cell under a rigid
+#   platen). The runs are the rows of pipelines/lattice-stiffness/cases-{quick,paper}.txt:
+#   per lattice "initial" (linear elastic, one increment of 0.1 mm: k, and E* = k H / A with
+#   H the height between the plates and A the footprint, both computed by latmpm-post from the
+#   parameters latmpm-lattice records) and "path" (neo-Hookean, increments to 20 mm / 8 mm:
+#   where the true tangent stops being positive definite, the load falls or Newton fails).
 # make lattice-stiffness-initial [QUICK=1]: only the initial stiffness (seconds per lattice).
 # Results in results/lattice-stiffness/{paper,quick}/: stiffness.md (table), stiffness.csv,
 # stiffness.png, initial/ (latmpm-post over the initial runs), run-<lattice>-{initial,path}/

@@ -62,7 +62,7 @@ void step_with_field_contact(SolverState& s, StepContext& c, ContactFields& fiel
   if (c.penalty_contact) throw std::logic_error("grid contact with penalty rigid bodies is refused when they are added");
   with_solver_shape(c.settings, [&](auto shape) {
     using Shape = decltype(shape);
-    if constexpr (has_smoothed_gradient<Shape>::value || uses_domain_vertices<Shape>::value)
+    if constexpr (Shape::smoothed_gradient || Shape::uses_domain_vertices)
       throw std::logic_error("grid contact with " + to_string(c.settings.shape_function) + " is refused by validate");
     else
       step_usl_fields<Shape>(s, c, fields, dt);

@@ -7,7 +7,7 @@
 namespace latmpm::mpm {
 
 // Quadratic: nodes base..base+2 with base = floor(x/h − ½), f = x/h − base ∈ [½, 3/2).
-struct Bspline2Shape {
+struct Bspline2Shape : ShapeFlags {
   static constexpr int nodes_per_axis = 3;
   static constexpr int reach_below = -1;
   static constexpr int reach_above = 2;
@@ -30,7 +30,7 @@ struct Bspline2Shape {
 };
 
 // Cubic: nodes base..base+3 with base = floor(x/h) − 1, t = x/h − base − 1 ∈ [0, 1).
-struct Bspline3Shape {
+struct Bspline3Shape : ShapeFlags {
   static constexpr int nodes_per_axis = 4;
   static constexpr int reach_below = -1;
   static constexpr int reach_above = 2;

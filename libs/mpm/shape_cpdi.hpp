@@ -21,10 +21,11 @@
 #include "core/errors.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
+#include "mpm/shape_flags.hpp"
 
 namespace latmpm::mpm {
 
-struct CpdiShape {
+struct CpdiShape : ShapeFlags {
   static constexpr int nodes_per_axis = 4;
   static constexpr int reach_below = -1;  // lowest stencil node relative to the particle's cell
   static constexpr int reach_above = 2;   // highest
@@ -32,13 +33,6 @@ struct CpdiShape {
   static constexpr bool stretches_with_f = false;
   static constexpr bool uses_domain_vertices = true;
 };
-
-// Shape policies whose stencil comes from the particle's CPDI domain (a dense box).
-template <class Shape, class = void>
-struct uses_domain_vertices : std::false_type {};
-template <class Shape>
-struct uses_domain_vertices<Shape, std::void_t<decltype(Shape::uses_domain_vertices)>>
-    : std::bool_constant<Shape::uses_domain_vertices> {};
 
 struct CpdiBoxStencil {
   static constexpr int n = CpdiShape::nodes_per_axis;

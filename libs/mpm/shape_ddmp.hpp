@@ -33,7 +33,7 @@
 
 namespace latmpm::mpm {
 
-struct DdmpShape {
+struct DdmpShape : ShapeFlags {
   static constexpr int nodes_per_axis = 4;
   static constexpr int reach_below = -1;
   static constexpr int reach_above = 2;
@@ -46,7 +46,7 @@ struct DdmpShape {
 // touches only its cell's 8 nodes, with S, α∇S and the 8 weights (1 − α) S_j of the nodal
 // stress and velocity gradient; grid passes do the rest (their force reaches one node
 // further per side: the solver activates those blocks too).
-struct DdmpGridShape {
+struct DdmpGridShape : ShapeFlags {
   static constexpr int nodes_per_axis = 2;
   static constexpr int reach_below = 0;
   static constexpr int reach_above = 1;
@@ -55,20 +55,6 @@ struct DdmpGridShape {
   static constexpr bool smoothed_gradient = true;
   static constexpr bool smoothed_on_grid = true;
 };
-
-// Shapes without a smoothed gradient part (all others).
-template <class Shape, class = void>
-struct has_smoothed_gradient : std::false_type {};
-template <class Shape>
-struct has_smoothed_gradient<Shape, std::void_t<decltype(Shape::smoothed_gradient)>>
-    : std::bool_constant<Shape::smoothed_gradient> {};
-
-// DDMP shapes whose smoothed part is evaluated on the grid (DdmpGridShape).
-template <class Shape, class = void>
-struct has_grid_smoothed_gradient : std::false_type {};
-template <class Shape>
-struct has_grid_smoothed_gradient<Shape, std::void_t<decltype(Shape::smoothed_on_grid)>>
-    : std::bool_constant<Shape::smoothed_on_grid> {};
 
 // The 1D factors of the smoothing integral over h^(dimension): ∫ S_j S_i dx = h M(i − j),
 // ∫ S_j S_i' dx = D(i − j), offsets i − j ∈ {−1, 0, 1}.

@@ -30,7 +30,7 @@ inline T tent_integral(T a, T b) {
 }
 }  // namespace gimp_detail
 
-struct UgimpShape {
+struct UgimpShape : ShapeFlags {
   static constexpr int nodes_per_axis = 3;
   static constexpr int reach_below = -1;
   static constexpr int reach_above = 2;
@@ -64,7 +64,7 @@ struct UgimpShape {
   }
 };
 
-struct CpgimpShape {
+struct CpgimpShape : ShapeFlags {
   static constexpr int nodes_per_axis = 4;
   static constexpr int reach_below = -1;
   static constexpr int reach_above = 3;

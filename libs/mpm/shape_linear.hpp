@@ -6,7 +6,7 @@
 
 namespace latmpm::mpm {
 
-struct LinearShape {
+struct LinearShape : ShapeFlags {
   static constexpr int nodes_per_axis = 2;
   static constexpr int reach_below = 0;  // lowest stencil node relative to the particle's cell
   static constexpr int reach_above = 1;  // highest stencil node relative to the particle's cell

@@ -84,7 +84,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
   with_solver_shape(c.settings, [&](auto shape) {
     using Shape = decltype(shape);
     constexpr int N = Shape::nodes_per_axis;
-    constexpr bool nodal_gradient = has_grid_smoothed_gradient<Shape>::value;
+    constexpr bool nodal_gradient = Shape::smoothed_on_grid;
     if constexpr (nodal_gradient)
       ddmp_nodal_velocity_gradient(s.grid, lane::momentum, h, c.ddmp_nodal);
     for (size_t bi = 0; bi < s.buckets.buckets().size(); ++bi) {
@@ -104,7 +104,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
               const Vec3 vi(node[lane::momentum], node[lane::momentum + 1], node[lane::momentum + 2]);
               Real w;
               Vec3 dw;
-              if constexpr (uses_domain_vertices<Shape>::value) {  // CPDI1's dense box
+              if constexpr (Shape::uses_domain_vertices) {  // CPDI1's dense box
                 const int e = CpdiBoxStencil::index(i, j, k);
                 w = st.w[e], dw = Vec3(st.g[0][e], st.g[1][e], st.g[2][e]);
               } else {
@@ -120,7 +120,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
           ddmp_corner_velocity_gradient(st, buffer, L);
           for (int r = 0; r < 3; ++r)
             for (int k = 0; k < 3; ++k) grad(r, k) += L[r * 3 + k];
-        } else if constexpr (has_smoothed_gradient<Shape>::value)
+        } else if constexpr (Shape::smoothed_gradient)
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
               for (int k = 0; k < N; ++k) {

@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "mpm/real.hpp"
+#include "mpm/shape_flags.hpp"
 #include "mpm/simd.hpp"
 
 namespace latmpm::mpm {
@@ -86,12 +87,7 @@ inline int nodes_along(const TrimmedStencil<N>& s, int a) {
   return s.count[a];
 }
 
-// Shape policies whose outer nodes are often exactly zero declare
-// `static constexpr bool trims_zero_planes = true;` and get TrimmedStencils.
-template <class Shape, class = void>
-struct trims_zero_planes : std::false_type {};
-template <class Shape>
-struct trims_zero_planes<Shape, std::void_t<decltype(Shape::trims_zero_planes)>>
-    : std::bool_constant<Shape::trims_zero_planes> {};
+// Shape policies whose outer nodes are often exactly zero set ShapeFlags::trims_zero_planes
+// and get TrimmedStencils.
 
 }  // namespace latmpm::mpm

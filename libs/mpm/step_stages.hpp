@@ -95,7 +95,7 @@ void with_solver_shape(const Settings& settings, F&& f) {
 }
 // DDMP on the grid: its smoothed force reaches one node beyond the particles' cells.
 template <class Shape>
-inline constexpr int grid_halo = has_grid_smoothed_gradient<Shape>::value ? 1 : 0;
+inline constexpr int grid_halo = Shape::smoothed_on_grid ? 1 : 0;
 
 // --- Stages without a shape function (step_stages.cpp) ------------------------------------
 
@@ -174,7 +174,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
         for (int k = 0; k < 4; ++k)
           c.tables[bi][(i * 4 + j) * 4 + k] = s.grid.find(first[0] + i, first[1] + j, first[2] + k);
   }
-  if constexpr (has_smoothed_gradient<Shape>::value) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
+  if constexpr (Shape::smoothed_gradient) prepare_ddmp_nodal_values(s.grid, c.ddmp_nodal);
   clear_grid(s.grid);
   s.grid_holds_velocity = false;
   c.tallies.assign(list.size(), BucketTally{});
@@ -184,10 +184,10 @@ void prepare_grid(SolverState& s, StepContext& c) {
 template <class Shape, class Mode>
 void scatter(SolverState& s, StepContext& c) {
   const auto& list = s.buckets.buckets();
-  constexpr bool nodal_stress = Mode::force && has_grid_smoothed_gradient<Shape>::value;
+  constexpr bool nodal_stress = Mode::force && Shape::smoothed_on_grid;
   if constexpr (nodal_stress) clear_ddmp_nodal_values(c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   for (int ci = 0; ci < 8; ++ci) {
     const auto& colour = s.buckets.colours()[size_t(ci)];
     // Buckets of one colour are two buckets apart: their boxes never overlap.
@@ -211,7 +211,7 @@ void scatter(SolverState& s, StepContext& c) {
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
   // A pass that marks constraints visits every point, rigid ones too: α is then complete.
-  if constexpr (has_grid_smoothed_gradient<Shape>::value && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
+  if constexpr (Shape::smoothed_on_grid && Mode::constraint) end_ddmp_alpha_pass(c.ddmp_nodal);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }
@@ -223,10 +223,10 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
   const auto& list = s.buckets.buckets();
   const Settings& st = c.settings;
   const GatherParameters parameters{st.cell_size, dt, st.flip_blend, st.gravity, st.min_jacobian};
-  constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && has_grid_smoothed_gradient<Shape>::value;
+  constexpr bool nodal_gradient = Mode::gradient_lane >= 0 && Shape::smoothed_on_grid;
   if constexpr (nodal_gradient) ddmp_nodal_velocity_gradient(s.grid, Mode::gradient_lane, st.cell_size, c.ddmp_nodal);
   DdmpAlphaCache alpha_cache;
-  if constexpr (has_grid_smoothed_gradient<Shape>::value) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
+  if constexpr (Shape::smoothed_on_grid) alpha_cache = begin_ddmp_alpha_pass(c.ddmp_nodal, s.particles.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketBuffer& buffer = c.buffers.local();
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
@@ -256,7 +256,7 @@ void gather(SolverState& s, StepContext& c, Real dt) {
 // neighbours (`find`: decide which nodes those are, from the mass just mapped).
 template <class Shape>
 void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool find) {
-  if constexpr (has_smoothed_gradient<Shape>::value) {
+  if constexpr (Shape::smoothed_gradient) {
     if (find) find_ddmp_small_mass_nodes(s.grid, ddmp_small_mass(s, c), c.ddmp_nodal);
     move_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
   }
@@ -264,7 +264,7 @@ void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool fin
 // After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
 template <class Shape>
 void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
-  if constexpr (has_smoothed_gradient<Shape>::value)
+  if constexpr (Shape::smoothed_gradient)
     spread_ddmp_small_mass_lanes(s.grid, ddmp_small_mass(s, c), first, count, c.ddmp_nodal);
 }
 
@@ -279,7 +279,7 @@ void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
   using Weights =
-      std::conditional_t<has_smoothed_gradient<Shape>::value || uses_domain_vertices<Shape>::value, LinearShape, Shape>;
+      std::conditional_t<Shape::smoothed_gradient || Shape::uses_domain_vertices, LinearShape, Shape>;
   constexpr int N = Weights::nodes_per_axis;
   const Real h = c.settings.cell_size;
   for (uint32_t p : c.contact.touching) {

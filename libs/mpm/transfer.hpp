@@ -95,13 +95,13 @@ inline Vec3 stencil_half_size(const Particles& ps, size_t p, Real h) {
 // Gradient = false: the pass needs weights only (DDMP then skips its smoothed part).
 template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
-  if constexpr (uses_domain_vertices<Shape>::value)
+  if constexpr (Shape::uses_domain_vertices)
     return make_cpdi_box_stencil(ps, p, h);
-  else if constexpr (has_grid_smoothed_gradient<Shape>::value)
+  else if constexpr (Shape::smoothed_on_grid)
     return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, buffer.ddmp_alpha_cache, p);
-  else if constexpr (has_smoothed_gradient<Shape>::value)
+  else if constexpr (Shape::smoothed_gradient)
     return make_ddmp_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, Gradient);
-  else if constexpr (trims_zero_planes<Shape>::value)
+  else if constexpr (Shape::trims_zero_planes)
     return trim_zero_planes(make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h));
   else
     return make_stencil<Shape>(ps.position[p], stencil_half_size<Shape>(ps, p, h), 1 / h);
@@ -150,7 +150,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
       for (uint32_t p = p0; p < p_end; ++p) {
         const auto& st = stencils[p - p0];
         Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
-        if constexpr (uses_domain_vertices<Shape>::value) {  // deformable points only (cpdi_particles.hpp)
+        if constexpr (Shape::uses_domain_vertices) {  // deformable points only (cpdi_particles.hpp)
           const ScatterLanes l = scatter_lanes<Mode>(ps, p);
           scatter_cpdi<Mode::force, BucketBuffer::stride_i, BucketBuffer::stride_j>(st, first, l.a, l.fx, l.fy, l.fz);
         } else {
@@ -202,10 +202,10 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
               });
             }
           }
-        if constexpr (Mode::force && has_grid_smoothed_gradient<Shape>::value) {
+        if constexpr (Mode::force && Shape::smoothed_on_grid) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
           scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p], buffer);
-        } else if constexpr (Mode::force && has_smoothed_gradient<Shape>::value) {
+        } else if constexpr (Mode::force && Shape::smoothed_gradient) {
           // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
@@ -427,7 +427,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   grad_v[a][2][q] = az[Mode::gradient_lane + a];
                 }
               }
-              if constexpr (gradient && has_grid_smoothed_gradient<Shape>::value) {
+              if constexpr (gradient && Shape::smoothed_on_grid) {
                 // DDMP on the grid: + (1 − α) Σ_j S̃_j L_j, the nodal L of ddmp_grid.hpp.
                 Real L[9];
                 ddmp_corner_velocity_gradient(st, buffer, L);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "statics/load_continuation.hpp"
 #include "statics/projected_newton.hpp"
 
 namespace latmpm::optimize {
@@ -73,11 +74,48 @@ AffineDepartures affine_departures(const NarrowBand& band, size_t p, const Vecto
   return d;
 }
 
+// The guess on the band's nodes: a node the guess lacks (the band grew) takes the mean of
+// its neighbours (26-neighbourhood) that have a value, in passes outward from the guess.
+Vector guessed_displacement(const NarrowBand& band, const EquilibriumGuess& guess) {
+  Vector u = Vector::Zero(Eigen::Index(3 * band.node_count()));
+  std::vector<char> known(band.node_count(), 0);
+  for (size_t node = 0; node < band.node_count(); ++node) {
+    const Eigen::Vector3i& c = band.node[node];
+    const auto it = guess.node_displacement.find(EquilibriumGuess::key(c[0], c[1], c[2]));
+    if (it == guess.node_displacement.end()) continue;
+    u.segment<3>(Eigen::Index(3 * node)) = it->second;
+    known[node] = 1;
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    std::vector<char> next = known;
+    for (size_t node = 0; node < band.node_count(); ++node) {
+      if (known[node]) continue;
+      Vec3 sum = Vec3::Zero();
+      int count = 0;
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const long m = band.find(band.node[node] + Eigen::Vector3i(dx, dy, dz));
+            if (m < 0 || !known[size_t(m)]) continue;
+            sum += u.segment<3>(Eigen::Index(3 * m));
+            ++count;
+          }
+      if (count == 0) continue;
+      u.segment<3>(Eigen::Index(3 * node)) = sum / Real(count);
+      next[node] = 1;
+      grew = true;
+    }
+    known.swap(next);
+  }
+  return u;
+}
+
 }  // namespace
 
 ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<Real>& density,
                                      const std::vector<char>& active, const LoadCase& load_case,
-                                     const SimpMaterial& material) {
+                                     const SimpMaterial& material, EquilibriumGuess* guess) {
   using namespace latmpm::statics;
   const size_t n = grid.point_count();
   const Real V = grid.point_volume();
@@ -131,8 +169,8 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   // at the shift's level: accepted up to 1e-4 (its huge compliance steers the optimiser
   // back), anything worse is a failure. Neo-Hookean: projected Newton to a tight tolerance
   // (the adjoint below assumes equilibrium; where densities span six orders of magnitude
-  // round-off stalls the residual near 1e-9, accepted up to 1e-8), under the whole load at
-  // once or, where that fails, in 2 or 4 equal load increments.
+  // round-off stalls the residual near 1e-9, accepted up to 1e-8), from the guess under the
+  // whole load, else by adaptive load continuation from rest.
   const bool linear = problem.is_quadratic();
   // Neo-Hookean: the affine stabilisation of the point quadrature's zero-energy modes
   // (β = 0.1 × μ_q, latmpm-solve's static default, docs/statics.md): a band cell holding
@@ -141,29 +179,26 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   // c_q/2 (1/n) Σ|r_k|², c_q = β μ V_q / h² ∝ E_q, is part of C and of its gradient.
   const Real beta = linear ? 0 : neo_hookean_stabilisation;
   problem.set_stabilisation(beta);
-  NewtonOptions options;
-  options.max_iterations = linear ? 10 : 30;  // linear: iterative refinement where E_min = 1e-9 E makes K ill-conditioned
-  if (!linear) options.tolerance = 1e-11;
-  const Real accepted = linear ? 1e-4 : 1e-8;
-  auto solved = [&](const NewtonReport& r) {
-    return r.converged || (r.iterations > 0 && r.residual.back() <= accepted);
-  };
-  NewtonReport report;
-  int newton_steps = 0;
-  for (int increments = 1; increments <= (linear ? 1 : 4); increments *= 2) {
-    u.setZero();
-    for (int k = 1; k <= increments; ++k) {
-      std::vector<Vec3> step_force = force;
-      for (Vec3& v : step_force) v *= Real(k) / Real(increments);
-      problem.set_point_forces(step_force);
-      report = solve_equilibrium(problem, dirichlet, u, solver, options);
-      newton_steps += report.iterations;
-      if (!solved(report)) break;
-    }
-    if (solved(report)) break;
+  LoadContinuation continuation;
+  continuation.newton.max_iterations = linear ? 10 : 30;  // linear: iterative refinement where E_min = 1e-9 E makes K ill-conditioned
+  if (!linear) continuation.newton.tolerance = 1e-11;
+  continuation.accepted = linear ? 1e-4 : 1e-8;
+  if (linear) continuation.first_step = 1, continuation.max_increments = 1;
+  if (!linear && guess) {
+    u = guessed_displacement(band, *guess);
+    for (size_t i = 0; i < dirichlet.fixed.size(); ++i)
+      if (dirichlet.fixed[i]) u[Eigen::Index(i)] = dirichlet.value[Eigen::Index(i)];
   }
-  if (!solved(report))
+  const ContinuationReport report = solve_by_load_continuation(problem, dirichlet, force, u, solver, continuation);
+  if (!report.converged)
     throw NumericalError("compliance: static solve failed: " + report.failure);
+  if (!linear && guess) {
+    guess->node_displacement.clear();
+    for (size_t node = 0; node < band.node_count(); ++node) {
+      const Eigen::Vector3i& c = band.node[node];
+      guess->node_displacement[EquilibriumGuess::key(c[0], c[1], c[2])] = u.segment<3>(Eigen::Index(3 * node));
+    }
+  }
   const Vector adjoint = linear ? u : adjoint_displacement(problem, dirichlet, u, solver);
 
   ComplianceResult r;
@@ -171,7 +206,9 @@ ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<R
   r.point_displacement.assign(n, Vec3::Zero());
   r.active_points = X.size();
   r.unknowns = problem.dof_count() - dirichlet.count();
-  r.newton_iterations = newton_steps;
+  r.newton_iterations = report.newton_iterations;
+  r.load_steps = report.steps;
+  r.from_guess = report.from_start;
   r.external_work = 0.5 * problem.external_force().dot(u);
   const std::vector<Mat3> F = problem.deformation_gradients(u);
   for (size_t p = 0; p < X.size(); ++p) {

@@ -15,6 +15,8 @@
 // is part of C and of the gradient (compliance.cpp).
 // Inactive points (outside the narrow band) carry no material and no unknowns.
 #pragma once
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "mpm/material.hpp"
@@ -42,12 +44,27 @@ struct ComplianceResult {
   size_t unknowns = 0;          // free displacement components of the solve
   size_t active_points = 0;
   int newton_iterations = 0;
+  int load_steps = 0;           // neo-Hookean: load steps from rest (0: the whole load at once)
+  bool from_guess = false;      // neo-Hookean: converged from the guess under the whole load
+};
+
+// A nonlinear equilibrium's nodal displacements by grid node, the start of the next
+// design's solve (a design iteration changes the densities and the band a little).
+struct EquilibriumGuess {
+  std::unordered_map<int64_t, Vec3> node_displacement;  // m, keyed by grid node
+  static int64_t key(int i, int j, int k) {
+    return (int64_t(i + (1 << 20)) << 42) | (int64_t(j + (1 << 20)) << 21) | int64_t(k + (1 << 20));
+  }
 };
 
 // density: ρ_q per quadrature point of `grid`; active: which points are simulated (every
 // loaded point must be active). Throws NumericalError when the solve fails.
+// guess (neo-Hookean only; may be null): on entry the start of the equilibrium solve under
+// the whole load (nodes it lacks start at the mean of their neighbours that it has); when
+// that fails, the load is applied in adaptive steps from rest (statics/load_continuation.hpp).
+// On return it holds this equilibrium.
 ComplianceResult evaluate_compliance(const DesignGrid& grid, const std::vector<Real>& density,
                                      const std::vector<char>& active, const LoadCase& load_case,
-                                     const SimpMaterial& material);
+                                     const SimpMaterial& material, EquilibriumGuess* guess = nullptr);
 
 }  // namespace latmpm::optimize

@@ -1,5 +1,6 @@
 #include "optimize/design_output.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -66,7 +67,15 @@ void write_method_files(const std::string& directory, const OptimizeScene& scene
 }
 
 void write_summary(const std::string& directory, const OptimizeScene& scene, const std::vector<MethodOutcome>& outcomes,
-                   const std::vector<std::string>& provenance_lines) {
+                   const std::vector<ExportReport>& exports, const std::vector<std::string>& provenance_lines) {
+  // The exported (mirrored) part's stiffness under the one load, from the compliance: C = F u / 2
+  // (u the load's mean displacement along it) gives the model k = F / u = F² / (2 C), and each
+  // mirror doubles the force at the same displacement.
+  Vec3 force = Vec3::Zero();
+  for (const Load& load : scene.load_case.loads) force += load.force;
+  const double mirrors = std::pow(2.0, double(symmetry_planes(scene.grid, scene.load_case).size()));
+  auto part_stiffness = [&](double compliance) { return mirrors * force.squaredNorm() / (2 * compliance); };
+  const bool one_load = scene.load_case.loads.size() == 1;
   std::ostringstream s;
   s << comments(provenance_lines);
   const Index3 c = scene.grid.cells;
@@ -75,7 +84,8 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
     << "points_per_cell = " << scene.grid.per_cell << "\n"
     << "volume_bound = " << number(scene.settings.volume_fraction) << "\n"
     << "refine = " << scene.refine << "\n";
-  for (const auto& o : outcomes) {
+  for (size_t i = 0; i < outcomes.size(); ++i) {
+    const MethodOutcome& o = outcomes[i];
     const bool own_bound = o.method == "leto" && scene.leto_volume_fraction > 0;
     s << "\n[" << o.method << "]\n"
       << "volume_bound = " << number(own_bound ? scene.leto_volume_fraction : scene.settings.volume_fraction) << "\n"
@@ -90,6 +100,14 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
       << "connectivity_corrections = " << o.corrections << "\n"
       << "linear_fallbacks = " << o.result.linear_fallbacks << "  # neo-Hookean iterations stepped on the linear compliance\n"
       << "components = " << o.components << "\n";
+    if (i < exports.size())
+      s << "part_points_volume_mm3 = " << number(1e9 * exports[i].solid_volume)
+        << "  # the exported part (mirrored whole): its solid points\n";
+    if (one_load && o.compliance_binary > 0)
+      s << "part_stiffness_N_per_m = " << number(part_stiffness(o.compliance_binary))
+        << "  # the exported part under the load: 2^mirrors F^2 / (2 C)\n";
+    if (one_load && o.compliance_refined > 0)
+      s << "part_stiffness_refined_N_per_m = " << number(part_stiffness(o.compliance_refined)) << "  # the same from C refined\n";
   }
   write_file_atomically(directory + "/summary.toml", s.str(), "--output");
 }

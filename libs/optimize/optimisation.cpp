@@ -60,6 +60,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
   OptimisationResult result;
   Real best_compliance = std::numeric_limits<Real>::infinity();
   std::vector<Real> x = design.initial(), lower, upper, move, rho;
+  EquilibriumGuess guess;  // neo-Hookean: the last equilibrium starts the next solve
   design.bounds(lower, upper, move);
   for (int k = 0; k < settings.max_iterations; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -92,7 +93,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
       m.weak_ratio = band ? 0 : 1e-9;  // the band's outside is not simulated; without it, weak
       if (linear_fallback) m.model = mpm::MaterialKind::linear_elastic;
       try {
-        c = evaluate_compliance(grid, masked, mask, load_case, m);
+        c = evaluate_compliance(grid, masked, mask, load_case, m, &guess);
         solved = true;
       } catch (const NumericalError&) {
         if (!linear_fallback && m.model != mpm::MaterialKind::linear_elastic) {
@@ -113,7 +114,7 @@ OptimisationResult optimise(const DesignGrid& grid, const LoadCase& load_case, P
     for (size_t q = 0; q < n; ++q) d_volume[q] = mask[q] ? grid.point_volume() / grid.domain_volume() : 0;
     for (size_t q : keep) c.gradient[q] = d_volume[q] = 0;
 
-    IterationRecord record{k, c.compliance, v, threshold, 0, c.active_points, c.unknowns};
+    IterationRecord record{k, c.compliance, v, threshold, 0, c.active_points, c.unknowns, c.newton_iterations, c.load_steps};
     // The design kept: the last one until the schedules end, then the stiffest that meets
     // the volume bound (the band's alternation makes late iterates oscillate).
     const bool schedules_done = design.continuation_done() && (!settings.band.enabled || k >= settings.band.ramp_iterations);

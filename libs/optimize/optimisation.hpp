@@ -44,6 +44,8 @@ struct IterationRecord {
   int iteration = 0;
   Real compliance = 0, volume_fraction = 0, threshold = 0, seconds = 0;
   size_t active_points = 0, unknowns = 0;
+  int newton_iterations = 0;  // of the static solve (1 for linear elasticity)
+  int load_steps = 0;         // neo-Hookean: load steps from rest (0: the whole load from the last equilibrium)
 };
 
 struct OptimisationResult {

@@ -60,7 +60,7 @@ std::vector<double> efficiency_length(const std::vector<double>& u, const std::v
 }
 
 CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, double mass,
-                                       const CompressionSettings& s, double footprint_area) {
+                                       const CompressionSettings& settings, double footprint_area) {
   CompressionMetrics m;
   const Curve raw{h.displacement, h.load};
   const Curve curve = monotone_prefix(raw);
@@ -84,6 +84,9 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
     m.notes.push_back("the travel goes back after " + mm(curve.x.back()) + ": metrics use the curve up to there");
   const double travel = curve.x.back();
   m.final_displacement = travel;
+  CompressionSettings s = settings;
+  if (std::isnan(s.fit_from) && std::isfinite(s.fit_from_fraction)) s.fit_from = s.fit_from_fraction * travel;
+  if (std::isnan(s.fit_to) && std::isfinite(s.fit_to_fraction)) s.fit_to = s.fit_to_fraction * travel;
   if (curve.size() == 2) {  // one static increment: its secant is the stiffness, nothing else is
     m.notes.push_back("two rows of travel: only the initial stiffness (their secant) and the effective modulus");
     set_stiffness(std::isfinite(s.fit_from) ? s.fit_from : curve.x.front(), std::isfinite(s.fit_to) ? s.fit_to : travel);

@@ -43,6 +43,9 @@ struct CompressionSettings {
   // none), u_b = half-way from u_a to the first peak, or u_a + 2 % of the gauge length without
   // a first peak (10 % of the travel without a gauge length).
   double fit_from = unset, fit_to = unset;
+  // The same as fractions of the run's final travel (--fit-range 20%:100%), when the lengths
+  // are unset.
+  double fit_from_fraction = unset, fit_to_fraction = unset;
   double plateau_from_strain = 0.20, plateau_to_strain = 0.30;  // ISO 13314
   double first_peak_drop = 0.05;  // relative drop that makes a local maximum a first peak
   // A spike within this travel is the start-up transient, and a maximum exceeded again within

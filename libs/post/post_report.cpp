@@ -102,7 +102,7 @@ ReportFiles write_post_report(const std::string& out_dir_text, const std::vector
   // 2. Metrics table.
   write_text(out_dir, "metrics.csv", metrics_csv(runs, context), files);
   if (!context.references.empty())
-    write_text(out_dir, "comparison.csv", comparison_csv(runs, context.references, provenance_comments(context)), files);
+    write_text(out_dir, "comparison.csv", comparison_csv(runs, context.references, provenance_comments(context), context.comparison_window), files);
   write_text(out_dir, "checks.csv", checks_csv(runs, provenance_comments(context)), files);
 
   // 3. Plots: the script is written first and kept; gnuplot writes temporary names, renamed when done.

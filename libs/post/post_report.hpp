@@ -8,6 +8,7 @@
 // Every file is written under a temporary name and renamed when whole (core/file_transfer),
 // and every one says which tool, version, command line and runs made it.
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct ReportContext {
   std::string title;         // plot and summary title; "" = a default from the kinds
   double euler_k = clamped_clamped_k;
   std::vector<std::string> references;  // labels of the runs the others are compared with
+  double comparison_window = std::numeric_limits<double>::quiet_NaN();  // m; NaN: run_comparison's default
 };
 
 struct ReportFiles {

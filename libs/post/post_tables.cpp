@@ -6,6 +6,7 @@
 
 #include "post/post_report.hpp"
 #include "post/report_rows.hpp"
+#include "post/run_checks.hpp"
 
 namespace latmpm::post {
 
@@ -56,6 +57,7 @@ std::vector<MetricCell> metric_cells(const RunAnalysis& a) {
       {"end_time", "ms", number_text(h.time.empty() ? NAN : h.time.back() * ms), true},
       {"travel", "mm", number_text(h.displacement.empty() ? NAN : h.displacement.back() * mm), true},
       {"specimen_mass", "g", number_text(f.mass * 1e3), true},
+      {"specimen_volume", "mm^3", number_text(f.volume * 1e9), true},
   };
   auto add = [&](const char* name, const char* unit, double v) { cells.push_back({name, unit, number_text(v), true}); };
   const CompressionMetrics c = a.compression.value_or(CompressionMetrics{});
@@ -63,6 +65,8 @@ std::vector<MetricCell> metric_cells(const RunAnalysis& a) {
   add("stiffness_fit_from", "mm", c.fit_from * mm);
   add("stiffness_fit_to", "mm", c.fit_to * mm);
   add("effective_modulus", "MPa", c.effective_modulus * 1e-6);
+  // The quasi-static check where the stiffness is read.
+  add("stiffness_fit_ke_over_se", "1", std::isfinite(c.stiffness) ? kinetic_over_strain(a, c.fit_from, c.fit_to) : NAN);
   add("peak_load", "N", c.peak_load);
   add("peak_displacement", "mm", c.peak_displacement * mm);
   add("peak_time", "ms", c.peak_time * ms);
@@ -84,6 +88,8 @@ std::vector<MetricCell> metric_cells(const RunAnalysis& a) {
   add("peak_to_euler", "1", col.peak_ratio);
   add("post_buckling_load", "N", col.post_buckling_load);
   add("post_buckling_to_euler", "1", col.post_buckling_ratio);
+  // The ringing late in the run against the Euler load (checks.csv's load_ripple / P_E).
+  add("load_ripple_to_euler", "1", a.column ? run_checks(a).load_ripple / col.euler_load : NAN);
   const ImpactMetrics i = a.impact.value_or(ImpactMetrics{});
   add("impact_speed", "m/s", i.impact_speed);
   add("impact_peak_load", "N", i.peak_load);

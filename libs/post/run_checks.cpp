@@ -8,7 +8,7 @@
 
 namespace latmpm::post {
 
-double kinetic_over_strain(const RunAnalysis& a) {
+double kinetic_over_strain(const RunAnalysis& a, double from, double to) {
   const SeriesTable& s = a.run.series;
   const auto& u = a.history.displacement;
   if (!s.has("kinetic_energy") || !s.has("strain_energy") || u.empty()) return RunChecks::none;
@@ -16,8 +16,13 @@ double kinetic_over_strain(const RunAnalysis& a) {
   const auto& se = s.column("strain_energy", a.run.path);
   double ratio = 0;
   for (size_t i = 0; i < u.size() && i < ke.size(); ++i)
-    if (u[i] >= 0.5 * u.back() && se[i] > 0) ratio = std::max(ratio, ke[i] / se[i]);
+    if (u[i] >= from && u[i] <= to && se[i] > 0) ratio = std::max(ratio, ke[i] / se[i]);
   return ratio;
+}
+
+double kinetic_over_strain(const RunAnalysis& a) {
+  const auto& u = a.history.displacement;
+  return u.empty() ? RunChecks::none : kinetic_over_strain(a, 0.5 * u.back(), INFINITY);
 }
 
 RunChecks run_checks(const RunAnalysis& a) {
@@ -27,6 +32,12 @@ RunChecks run_checks(const RunAnalysis& a) {
   const auto& f = a.history.load;
   if (!f.empty()) c.final_load = f.back();
   c.ke_over_se = kinetic_over_strain(a);
+  if (s.has("energy_error") && s.has("external_work") && s.rows() > 0) {
+    const double w = s.column("external_work", a.run.path).back();
+    if (w != 0) c.energy_error_over_work = s.column("energy_error", a.run.path).back() / w;
+  }
+  if (s.has("strain_energy") && !u.empty() && u.back() > 0)
+    c.energy_secant_stiffness = 2 * s.column("strain_energy", a.run.path).back() / (u.back() * u.back());
   if (s.has("kinetic_energy") && s.has("strain_energy") && s.has("external_work") && !u.empty()) {
     const auto& ke = s.column("kinetic_energy", a.run.path);
     const auto& se = s.column("strain_energy", a.run.path);
@@ -63,11 +74,12 @@ std::string checks_csv(const std::vector<RunAnalysis>& runs, const std::vector<s
   std::ostringstream out;
   for (const auto& line : provenance_comments) out << "# " << line << "\n";
   out << "# how far each run can be trusted (docs/post.md, \"Checks\")\n";
-  out << "label,energy_balance_error[1],balance_5pct_strain[1],ke_over_se[1],load_ripple[N],final_load[N]\n";
+  out << "label,energy_balance_error[1],balance_5pct_strain[1],ke_over_se[1],load_ripple[N],final_load[N],energy_error_over_work[1],energy_secant_stiffness[N/mm]\n";
   for (const RunAnalysis& a : runs) {
     const RunChecks c = run_checks(a);
     out << a.run.label << "," << number_text(c.energy_balance_error) << "," << number_text(c.balance_5pct_strain) << ","
-        << number_text(c.ke_over_se) << "," << number_text(c.load_ripple) << "," << number_text(c.final_load) << "\n";
+        << number_text(c.ke_over_se) << "," << number_text(c.load_ripple) << "," << number_text(c.final_load) << ","
+        << number_text(c.energy_error_over_work) << "," << number_text(c.energy_secant_stiffness * 1e-3) << "\n";
   }
   return out.str();
 }

@@ -8,6 +8,12 @@
 //   load_ripple           N, root-mean-square of the load about its mean over the last quarter
 //                         of the travel (the explicit solver's ringing after buckling)
 //   final_load            N, the load of the last row
+//   energy_secant_stiffness  N/m, 2 SE / u² at the last row: the stiffness of the linear
+//                         specimen that stores the run's strain energy at its travel (a reading of
+//                         the stiffness from the energy, beside the load's initial_stiffness)
+//   energy_error_over_work  the solver's own balance at the last row, signed: the series'
+//                         energy_error (every energy it books, docs/scene.md) over W; positive
+//                         when the scheme made energy. NaN when W is 0
 // Each is NaN where the series lacks the columns it needs.
 #pragma once
 #include <limits>
@@ -21,12 +27,14 @@ namespace latmpm::post {
 struct RunChecks {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double energy_balance_error = none, balance_5pct_strain = none, ke_over_se = none;
-  double load_ripple = none, final_load = none;
+  double load_ripple = none, final_load = none, energy_error_over_work = none, energy_secant_stiffness = none;
 };
 
 RunChecks run_checks(const RunAnalysis& run);
-// The largest KE / SE over the rows at or beyond half of the final travel where SE > 0.
+// The largest KE / SE over the rows at or beyond half of the final travel where SE > 0; or
+// over the rows with travel in [from, to].
 double kinetic_over_strain(const RunAnalysis& run);
+double kinetic_over_strain(const RunAnalysis& run, double from, double to);
 
 // checks.csv: one row per run.
 std::string checks_csv(const std::vector<RunAnalysis>& runs, const std::vector<std::string>& provenance_comments);

@@ -70,7 +70,7 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
                           facts.deformable_bodies.front() + "', the mass uses each body's density");
 
   // Point files: volumes of the deformable bodies and the geometry parameters.
-  double mass = 0;
+  double mass = 0, volume = 0;
   bool mass_known = !facts.deformable_bodies.empty();
   if (const toml::array* files = doc["points"].as_array()) {
     for (const auto& entry : *files) {
@@ -88,7 +88,7 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
             density = scene_quantity(doc["bodies"][body]["material"]["density"].node(), dimension::density,
                                      "bodies." + body + ".material.density", facts);
           for (size_t i = 0; i < points.size(); ++i)
-            if (points.body[i] == b) mass += points.volume[i] * density;
+            if (points.body[i] == b) mass += points.volume[i] * density, volume += points.volume[i];
         }
         if (facts.cell.empty() && points.parameters.count("cell")) facts.cell = points.parameters.at("cell");
         if (std::isnan(facts.strut_diameter)) facts.strut_diameter = length_parameter(points, "strut_diameter", file);
@@ -107,7 +107,7 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
     facts.notes.push_back("scene.toml: no [[points]] file named");
     mass_known = false;
   }
-  if (mass_known && std::isfinite(mass) && mass > 0) facts.mass = mass;
+  if (mass_known && std::isfinite(mass) && mass > 0) facts.mass = mass, facts.volume = volume;
   if (std::isnan(facts.gauge_length))
     facts.notes.push_back("no lattice_zmin/lattice_zmax in the point files' parameters: no strains");
   return facts;

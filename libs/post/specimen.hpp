@@ -21,6 +21,7 @@ struct SpecimenFacts {
   // kg: Σ volume × density over the deformable bodies' points, with the density as given
   // (the real material, not mass-scaled: SEA is a property of the printed part).
   double mass = unknown;
+  double volume = unknown;  // m³: Σ volume over the same points
   // From the point files' /points/parameters.
   std::string cell;                   // "column", "tetrahedral", ...
   double strut_diameter = unknown;    // m (t)

@@ -5,6 +5,7 @@
 
 #include "core/errors.hpp"
 #include "mpm/material.hpp"
+#include "mpm/rigid_body.hpp"
 #include "mpm/shape_function_kind.hpp"
 #include "run_output/scene_simulation.hpp"
 
@@ -82,27 +83,24 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   const statics::NarrowBand& band = out.problem->band();
   out.loading.support_nodes = statics::nodes_reached_by(band, support_x, support_half);
   out.loading.platen_nodes = statics::nodes_reached_by(band, platen_x, platen_half);
-  // Rigid bodies by geometry: the band nodes inside them (bonded: the static counterpart of
-  // the explicit solver's no-slip grid coupling).
-  // A half-space short of the material is first moved into contact (the explicit run's
-  // travel before its first contact): its plane then passes through the nearest band nodes.
+  // Rigid bodies by geometry: the band nodes the explicit solver couples to them, those whose
+  // support (the open cube of half-width h) overlaps the body (mpm::rigid_body_contains), so
+  // that both solvers hold the same nodes (bonded: the static counterpart of the no-slip grid
+  // coupling). A half-space short of every such node is first moved into contact (the
+  // explicit run's travel before its first contact).
   for (const RigidBodySpec& r : scene.rigid_bodies) {
     auto& nodes = r.motion == mpm::RigidMotion::driven ? out.loading.platen_nodes : out.loading.support_nodes;
-    double gap = 0;
+    Eigen::Vector3d contact = Eigen::Vector3d::Zero();
     if (r.shape == mpm::RigidShape::half_space) {
-      gap = std::numeric_limits<double>::infinity();
-      for (size_t n = 0; n < band.node_count(); ++n)
-        gap = std::min(gap, (band.node_position(n) - r.plane_point).dot(r.plane_normal));
+      const Eigen::Vector3d n = r.plane_normal.normalized();
+      double gap = std::numeric_limits<double>::infinity();
+      for (size_t i = 0; i < band.node_count(); ++i) gap = std::min(gap, (band.node_position(i) - r.plane_point).dot(n) - h);
       gap = std::max(gap, 0.0);
       out.contact_gap = std::max(out.contact_gap, gap);
+      if (gap > 0) contact = (gap + 1e-6 * h) * n;  // just past touching: the open cube overlaps
     }
-    for (size_t n = 0; n < band.node_count(); ++n) {
-      const Eigen::Vector3d x = band.node_position(n);
-      const bool inside = r.shape == mpm::RigidShape::half_space
-                              ? (x - r.plane_point).dot(r.plane_normal) <= gap + 1e-9 * h
-                              : ((x - r.box_min).array() >= 0).all() && ((r.box_max - x).array() >= 0).all();
-      if (inside) nodes.push_back(n);
-    }
+    for (size_t i = 0; i < band.node_count(); ++i)
+      if (mpm::rigid_body_contains(r, contact, band.node_position(i), h)) nodes.push_back(i);
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   }

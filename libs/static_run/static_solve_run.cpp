@@ -153,7 +153,8 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     snapshots.write(static_snapshot(points, scene, sp, u, pt.travel, step, pt.travel / speed));
     const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
                              " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
-                             std::to_string(pt.newton_iterations) + (pt.predicted ? " from the predictor" : "") + ", linear " +
+                             std::to_string(pt.newton_iterations) + (pt.predicted ? " from the predictor" : "") + " (" +
+                             std::to_string(pt.true_tangent_steps) + " true tangent), linear " +
                              std::to_string(pt.linear_iterations) + " (last residual " +
                              format_number("%.1e", pt.linear_residual) + "), residual " + format_number("%.2e", pt.residual) +
                              ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");

@@ -82,6 +82,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.support_load = -nodal_load(loading.support_nodes, loading.direction, f_int);
     point.energy = r.energy.back() + problem.external_force().dot(state);
     point.newton_iterations = r.iterations;
+    point.true_tangent_steps = r.true_tangent_steps;
     point.linear_iterations = r.linear_iterations;
     point.linear_residual = r.linear_residual;
     point.residual = r.residual.back();

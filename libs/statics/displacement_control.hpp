@@ -39,6 +39,7 @@ struct PathPoint {
   Real energy = 0;          // J: stored elastic energy
   int newton_iterations = 0;  // including any spent from an abandoned prediction
   bool predicted = false;     // converged from the predictor's start
+  int true_tangent_steps = 0; // of the converged solve: steps with the unprojected Hessian
   int linear_iterations = 0;
   Real linear_residual = 0;  // ‖K d − r‖ / ‖r‖ of the last linear solve
   Real residual = 0;        // final relative residual

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/errors.hpp"
 #include "statics/inversion_free_step.hpp"
@@ -38,7 +39,10 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
   NewtonReport report;
   const std::vector<char>& fixed = dirichlet.fixed;
   const Vector& f_ext = problem.external_force();
-  bool true_tangent_indefinite = false;  // found so once in this solve: not tried again
+  // The residual at which the true tangent was last found indefinite (or not descending):
+  // tried again once the residual has fallen by retry_true_tangent_after since then (the
+  // struts' bending may leave it indefinite far from the solution, not near it).
+  Real true_tangent_failed_at = std::numeric_limits<Real>::infinity();
   for (int k = 0;; ++k) {
     const Vector f_int = problem.internal_force(u);
     const Vector g = f_int - f_ext;
@@ -61,7 +65,8 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
 
     // Newton direction (step 2–3): near the solution the true Hessian where it is
     // positive definite (quadratic convergence), otherwise the projected one.
-    const bool try_true = !boundary_moves && !true_tangent_indefinite && residual <= options.true_tangent_below;
+    const bool try_true = !boundary_moves && residual <= options.true_tangent_below &&
+                          residual <= options.retry_true_tangent_after * true_tangent_failed_at;
     // An iterative solver builds its preconditioner for an indefinite true tangent too: its
     // direction is then taken only when it solved and descends, else the projected one.
     bool factorized = false;
@@ -100,7 +105,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
         if (!projected) ++report.true_tangent_steps;
         break;
       }
-      if (!projected) true_tangent_indefinite = true;
+      if (!projected) true_tangent_failed_at = residual;
     }
     if (!factorized) {
       report.failure = "the projected Hessian is singular (a part of the body is not held)";
@@ -130,6 +135,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     }
     u += alpha * d;
     report.step.push_back(alpha);
+
   }
   report.min_jacobian = problem.min_jacobian(u);
   return report;

@@ -8,3 +8,11 @@ post_metric() {
     !h { for (i = 1; i <= NF; i++) { n = $i; sub(/\[.*/, "", n); c[n] = i } h = 1; next }
     $1 == label { print $c[name] }' "$1"
 }
+# post_comparison FILE REFERENCE LABEL COLUMN: the same from latmpm-post's comparison.csv,
+# whose rows are keyed by the reference and the run.
+post_comparison() {
+  awk -F, -v ref="$2" -v label="$3" -v name="$4" '
+    /^#/ { next }
+    !h { for (i = 1; i <= NF; i++) { n = $i; sub(/\[.*/, "", n); c[n] = i } h = 1; next }
+    $1 == ref && $2 == label { print $c[name] }' "$1"
+}

@@ -9,11 +9,14 @@
 # an error: the stamp is made (the trade-off records which settings fail).
 # A run stopped part-way (RUN_DIR/checkpoint.h5, written every 10 minutes by long scenes)
 # continues from its checkpoint (latmpm-solve --resume) when RUN_DIR.args is still the one it
-# was started with (RUN_DIR/args.used); the solver adds up wall and CPU time over the parts.
+# was started with (RUN_DIR/args.used: the same build of the solver too); the solver adds up
+# wall and CPU time over the parts.
 # usage: solve-case.sh BIN_DIR RUN_DIR THREADS [ALLOW_FAILURE]
 set -euo pipefail
 bin=$1 run_dir=$2 threads=$3 allow_failure=${4:-0}
-mapfile -t args < "$run_dir.args"
+# The solver's arguments: RUN_DIR.args but its comment lines (the solver's version, which
+# makes a run of another build stale: pipelines/common.mk).
+mapfile -t args < <(grep -v '^#' "$run_dir.args")
 rm -f "$run_dir/done"
 # How the last run in RUN_DIR ended (status.toml's status; empty when there is none).
 ended() { sed -n 's/^status = "\(.*\)"$/\1/p' "$run_dir/status.toml" 2>/dev/null; }

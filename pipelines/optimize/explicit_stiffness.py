@@ -1,60 +1,49 @@
 """The optimised 3D beam's stiffness in latmpm-solve against the optimiser's compliance
-(docs/paper-c.md, "The optimised beam in latmpm-solve").
+(docs/paper-c.md, "The optimised beam in latmpm-solve"). Prints one markdown table row.
 
-usage: explicit_stiffness.py RUN_DIR SUMMARY_TOML METHOD FORCE_N OPTIMIZE_LOG POINTS_H5
+usage: explicit_stiffness.py POST_DIR SUMMARY_TOML METHOD ROUTE
 
-RUN_DIR: latmpm-solve's run of the whole (mirrored) part, loaded by a driven box;
-SUMMARY_TOML: latmpm-optimize's summary.toml; METHOD: leto or simp; FORCE_N: the
-optimiser's total load on the modelled part (the half model's, N).
-The optimiser's compliance C = 1/2 f.u of the half model under the force F gives the load
-point's mean displacement u = 2C/F, so the whole part (twice the force at the same
-displacement) has the stiffness k = 2F/u = F^2/C. The explicit stiffness is the slope of the
-driven box's load against its travel, least squares over the last 80 % of the travel (the
-contact's start left out), and, as a second reading, the secant 2 W / d^2 of the strain
-energy W at the end. The volumes: the design's solid points (latmpm-optimize's line, the
-whole part) and the run's points (POINTS_H5, read with h5dump).
-Prints one markdown table row.
+POST_DIR: latmpm-post over the run of the whole (mirrored) part loaded by a driven box, with
+--fit-range 20%:100% (the contact's start left out), label "driven" (--load load_driven) and
+"fixed" (--load load_fixed, a second call into POST_DIR/fixed); SUMMARY_TOML:
+latmpm-optimize's summary.toml; METHOD: leto or simp; ROUTE: stl or points.
+Every number is a tool's: the optimiser's part stiffness (2^mirrors F^2 / (2 C)) and the
+exported part's volume from summary.toml; the explicit stiffness (least-squares slope of the
+load against the travel) with the largest KE/SE over its fit, the secant 2 W / d^2 of the
+strain energy at the end and the run's point volume from latmpm-post's metrics.csv and
+checks.csv (docs/post.md). This script
+copies them, and sets the explicit ones beside the optimiser's in percent.
 """
 import csv
-import re
-import subprocess
 import sys
 import tomllib
 
 
-def least_squares_slope(x, y):
-    n = len(x)
-    mx, my = sum(x) / n, sum(y) / n
-    sxx = sum((a - mx) ** 2 for a in x)
-    return sum((a - mx) * (b - my) for a, b in zip(x, y)) / sxx
+def row(path, label):
+    """The row of LABEL in a latmpm-post CSV, keyed by the header names without units."""
+    lines = [line for line in open(path) if not line.startswith("#")]
+    for r in csv.DictReader(lines):
+        if r["label"] == label:
+            return {key.split("[", 1)[0]: value for key, value in r.items()}
+    raise SystemExit(f"explicit_stiffness.py: {path}: no row '{label}'")
 
 
 def main():
-    run, summary, method, force = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
-    start = 0.2
-    design = re.search(rf"optimize: {method} .*points ([0-9.e+]+) mm\^3", open(sys.argv[5]).read()).group(1)
-    dump = subprocess.run(["h5dump", "-d", "/points/volume", "-y", "-w", "0", sys.argv[6]], check=True,
-                          capture_output=True, text=True).stdout
-    points = 1e9 * sum(float(v) for v in dump.split("DATA {", 1)[1].split("}", 1)[0].replace(",", " ").split())
+    post, summary, method, route = sys.argv[1:5]
     with open(summary, "rb") as f:
         s = tomllib.load(f)[method]
-    rows = list(csv.DictReader(open(f"{run}/series.csv")))
-    d = [float(r["displacement[m]"]) for r in rows]
-    load = [float(r["load_driven[N]"]) for r in rows]
-    fixed = [float(r["load_fixed[N]"]) for r in rows]
-    kinetic = [float(r["kinetic_energy[J]"]) for r in rows]
-    strain = [float(r["strain_energy[J]"]) for r in rows]
-    keep = [i for i in range(len(d)) if d[i] >= start * d[-1]]
-    k_driven = least_squares_slope([d[i] for i in keep], [load[i] for i in keep])
-    k_fixed = least_squares_slope([d[i] for i in keep], [fixed[i] for i in keep])
-    k_energy = 2 * strain[-1] / d[-1] ** 2
-    k_opt = force**2 / s["compliance_J"]
-    k_ref = force**2 / s["compliance_refined_J"]
-    ratio = max(kinetic[i] / strain[i] for i in keep if strain[i] > 0)
-    route = "voxelized STL" if "voxelized" in sys.argv[6] else "design's point file"
-    print(f"| {method} | {route} | {k_opt:.4g} | {k_ref:.4g} | {k_driven:.4g} ({100 * (k_driven / k_opt - 1):+.1f} %) "
-          f"| {k_fixed:.4g} | {k_energy:.4g} ({100 * (k_energy / k_opt - 1):+.1f} %) | {ratio:.2g} "
-          f"| {design} / {points:.1f} |")
+    driven = row(f"{post}/metrics.csv", "driven")
+    fixed = row(f"{post}/fixed/metrics.csv", "fixed")
+    checks = row(f"{post}/checks.csv", "driven")
+    n_per_mm = 1e3  # latmpm-post's N/mm in this table's N/m
+    k_opt, k_ref = s["part_stiffness_N_per_m"], s["part_stiffness_refined_N_per_m"]
+    k_driven = float(driven["initial_stiffness"]) * n_per_mm
+    k_fixed = float(fixed["initial_stiffness"]) * n_per_mm
+    k_energy = float(checks["energy_secant_stiffness"]) * n_per_mm
+    where = "voxelized STL" if route == "stl" else "design's point file"
+    print(f"| {method} | {where} | {k_opt:.4g} | {k_ref:.4g} | {k_driven:.4g} ({100 * (k_driven / k_opt - 1):+.1f} %) "
+          f"| {k_fixed:.4g} | {k_energy:.4g} ({100 * (k_energy / k_opt - 1):+.1f} %) | {float(driven['stiffness_fit_ke_over_se']):.2g} "
+          f"| {s['part_points_volume_mm3']:.4g} / {float(driven['specimen_volume']):.1f} |")
 
 
 if __name__ == "__main__":

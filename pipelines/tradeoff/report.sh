@@ -11,6 +11,7 @@
 set -euo pipefail
 out=$1
 here=$(dirname "$0")
+source "$here/../common/post-metric.sh"
 csv="$out/errors.csv"
 echo "family,run,cell[mm],ppc,shape,mass_scaling,speed[mm/s],points,steps,cpu[s],wall[s],curve_error,peak_error,late_error,euler_error,ke_over_se,status,curve_change_vs_base" > "$csv.tmp"
 # status KEY RUN_DIR: a value of RUN_DIR/status.toml (latmpm-solve), strings without quotes.
@@ -34,10 +35,13 @@ while IFS=: read -r family name; do
     change=""
     ended="failed at $(status reason "$run" | sed -n 's/^numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p')"
   else
-    # comparison.csv: reference,label,curve,peak,late,euler,ke_over_se. The change against the
-    # base case isolates the knob from the base's own error.
-    errors=$(awk -F, -v run="$name" '$1 == "ref" && $2 == run { print $3 "," $4 "," $5 "," $6 "," $7 }' "$out/$family/comparison.csv")
-    change=$(awk -F, -v run="$name" '$1 == "base" && $2 == run { print $3 }' "$out/$family/comparison.csv")
+    # latmpm-post's comparison.csv against the reference; the change against the base case
+    # isolates the knob from the base's own error.
+    cmp="$out/$family/comparison.csv" errors=""
+    for e in curve_error peak_error late_error euler_error ke_over_se; do
+      errors+="${errors:+,}$(post_comparison "$cmp" ref "$name" $e)"
+    done
+    change=$(post_comparison "$cmp" base "$name" curve_error)
   fi
   echo "$family,$name,$cell,$ppc,$shape${scheme:+ ($scheme)},$ms,$speed,$cost,$errors,$ended,$change" >> "$csv.tmp"
 done < "$out/knobs.txt"

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/errors.hpp"
+#include "hexmesh/hex_points.hpp"
 #include "mpm/simulation.hpp"
 #include "mpm/simulation_test_access.hpp"
 #include "free_bar.hpp"
@@ -21,40 +22,41 @@ using namespace latmpm::mpm::test;
 namespace {
 
 // A conforming mesh of n bricks of edge `size` from `lo`, interior vertices moved by up to
-// `jitter`·size per axis; one point per brick at its centroid with its exact volume.
+// `jitter`·size per axis; its CPDI1 points (hexmesh/hex_points.hpp: one per brick at its
+// centroid with its exact volume) added to `ps` as `body`.
 void add_hex_points(PointSet& ps, const Vec3& lo, const Eigen::Vector3i& n, Real size, Real jitter,
                     const std::string& body, uint32_t seed = 7) {
   const int b = add_body_name(ps, body);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<Real> u(-jitter * size, jitter * size);
   auto index = [&](int i, int j, int k) { return (size_t(i) * size_t(n[1] + 1) + size_t(j)) * size_t(n[2] + 1) + size_t(k); };
-  std::vector<Vec3> vertex(size_t(n[0] + 1) * size_t(n[1] + 1) * size_t(n[2] + 1));
+  HexMesh mesh;
+  mesh.nodes.resize(size_t(n[0] + 1) * size_t(n[1] + 1) * size_t(n[2] + 1));
   for (int i = 0; i <= n[0]; ++i)
     for (int j = 0; j <= n[1]; ++j)
       for (int k = 0; k <= n[2]; ++k) {
         Vec3 x = lo + size * Vec3(i, j, k);
         const bool interior = i > 0 && i < n[0] && j > 0 && j < n[1] && k > 0 && k < n[2];
         if (interior) x += Vec3(u(rng), u(rng), u(rng));
-        vertex[index(i, j, k)] = x;
+        mesh.nodes[index(i, j, k)] = x;
       }
   for (int i = 0; i < n[0]; ++i)
     for (int j = 0; j < n[1]; ++j)
       for (int k = 0; k < n[2]; ++k) {
-        HexVertices h;  // gmsh order: face z−, counter-clockwise from (−,−), then face z+
+        std::array<size_t, 8> element;  // gmsh order: face z−, counter-clockwise from (−,−), then face z+
         for (int c = 0; c < 8; ++c) {
           const int di = (c & 3) == 1 || (c & 3) == 2, dj = (c & 3) >= 2, dk = c >= 4;
-          h[size_t(c)] = vertex[index(i + di, j + dj, k + dk)];
+          element[size_t(c)] = index(i + di, j + dj, k + dk);
         }
-        const HexIntegrals hex = hex_integrals(h);
-        Vec3 box_lo = h[0], box_hi = h[0];
-        for (const Vec3& x : h) box_lo = box_lo.cwiseMin(x), box_hi = box_hi.cwiseMax(x);
-        ps.position.push_back(hex.centroid);
-        ps.volume.push_back(hex.volume);
-        ps.body.push_back(b);
-        ps.half_size.push_back((box_hi - box_lo) / 2);
-        ps.domain_vertices.push_back(h);
-        for (auto& [name, mask] : ps.tags) mask.push_back(0);
+        mesh.elements.push_back(element);
       }
+  const PointSet hex = hex_mesh_points(mesh, body, size);
+  ps.position.insert(ps.position.end(), hex.position.begin(), hex.position.end());
+  ps.volume.insert(ps.volume.end(), hex.volume.begin(), hex.volume.end());
+  ps.half_size.insert(ps.half_size.end(), hex.half_size.begin(), hex.half_size.end());
+  ps.domain_vertices.insert(ps.domain_vertices.end(), hex.domain_vertices.begin(), hex.domain_vertices.end());
+  ps.body.insert(ps.body.end(), hex.size(), b);
+  for (auto& [name, mask] : ps.tags) mask.insert(mask.end(), hex.size(), 0);
 }
 
 Settings cpdi_settings(Real h) {

@@ -136,6 +136,13 @@ TEST_CASE("An explicit fit range and plateau strains are used as given", "[post]
   const CompressionMetrics m = compression_metrics(h, gauge, mass, s);
   CHECK(m.stiffness == Approx(-500).epsilon(1e-9));
   CHECK(m.plateau_load == Approx(1.5).epsilon(1e-12));
+  // The same range as fractions of the 30 mm travel (--fit-range 4%:6%).
+  CompressionSettings fractions;
+  fractions.fit_from_fraction = 0.04, fractions.fit_to_fraction = 0.06;
+  const CompressionMetrics f = compression_metrics(h, gauge, mass, fractions);
+  CHECK(f.fit_from == Approx(1.2e-3).epsilon(1e-12));
+  CHECK(f.fit_to == Approx(1.8e-3).epsilon(1e-12));
+  CHECK(f.stiffness == Approx(-500).epsilon(1e-9));
   s.plateau_to_strain = 0.5;  // 8–20 mm: includes densification, mean = 1.5 + a ∫(u−16)² / 12 mm
   const double expected = 1.5 + Foam::a * std::pow(4e-3, 3) / 3 / 12e-3;
   CHECK(compression_metrics(h, gauge, mass, s).plateau_load == Approx(expected).epsilon(1e-6));

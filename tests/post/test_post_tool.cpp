@@ -110,6 +110,9 @@ TEST_CASE("latmpm-post refuses bad options with exit status 2 naming the option"
                           Case{"good -o x --label a=elsewhere", "--label a=elsewhere: 'elsewhere' is not one of"},
                           Case{"good -o x --fit-range 1mm", "--fit-range: '1mm' is not FROM:TO"},
                           Case{"good -o x --fit-range 1:2mm", "--fit-range: FROM: '1' has no unit"},
+                          Case{"good -o x --fit-range 20%:1mm", "--fit-range: FROM and TO must both be lengths"},
+                          Case{"good -o x --fit-range 20%:120%", "--fit-range: TO: must lie within 0% to 100%"},
+                          Case{"good -o x --fit-range 50%:20%", "--fit-range: TO must be above FROM"},
                           Case{"good -o x --plateau-strain 0.3:0.2", "--plateau-strain: needs 0 <= FROM < TO < 1"},
                           Case{"good -o x --kind tension", "--kind: 'tension' is not one of"});
   const ToolRun r = run_post(c.first);

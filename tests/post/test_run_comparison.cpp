@@ -4,9 +4,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
+#include "post/report_rows.hpp"
 #include "post/run_analysis.hpp"
 #include "post/run_checks.hpp"
 #include "post/run_comparison.hpp"
@@ -22,12 +24,13 @@ namespace {
 
 // A run loaded linearly, F = stiffness u, over 2 mm in 201 rows; kinetic energy a fixed
 // fraction of the strain energy F u / 2 (the ratio the quasi-static check must find); the
-// external work W such that the balance error |KE + SE − W| / W is 0.1 u / u_end.
+// external work W such that the balance error |KE + SE − W| / W is 0.1 u / u_end, and the
+// solver's own signed energy_error KE + SE − W.
 RunAnalysis linear_run(const std::string& name, double stiffness, double ke_fraction, const std::string& cell = "tetrahedral") {
   const fs::path dir = test::process_scratch("comparison").path() / name;
   fs::remove_all(dir);
   test::SeriesSpec s;
-  std::vector<double> kinetic, strain, work;
+  std::vector<double> kinetic, strain, work, error;
   for (int i = 0; i <= 200; ++i) {
     const double u = 1e-5 * i, f = stiffness * u;
     s.time.push_back(1e-4 * i);
@@ -36,8 +39,10 @@ RunAnalysis linear_run(const std::string& name, double stiffness, double ke_frac
     strain.push_back(0.5 * f * u);
     kinetic.push_back(ke_fraction * 0.5 * f * u);
     work.push_back((kinetic.back() + strain.back()) / (1 - 0.1 * i / 200.0));
+    error.push_back(kinetic.back() + strain.back() - work.back());
   }
-  s.extra = {{"kinetic_energy[J]", kinetic}, {"strain_energy[J]", strain}, {"external_work[J]", work}};
+  s.extra = {{"kinetic_energy[J]", kinetic}, {"strain_energy[J]", strain}, {"external_work[J]", work},
+             {"energy_error[J]", error}};
   test::SyntheticRun spec;
   spec.cell = cell;
   test::write_synthetic_run(dir.string(), spec, s);
@@ -58,11 +63,19 @@ TEST_CASE("A run loaded 10 % more than its reference has curve, peak and work er
   CHECK(c.late_error == Approx(0.1).epsilon(1e-9));  // work: the trapezoid rule is exact on a line
   CHECK(std::isnan(c.euler_error));                  // not a column
   CHECK(c.ke_over_se == Approx(0.2).epsilon(1e-9));
+  CHECK(c.final_error == Approx(0.1).epsilon(1e-9));  // 1100 / 1000 N/m at the same 2 mm
+  // Windows of 0.25 mm (1/8 of the travel): the means are k times the windows' mean travel,
+  // 10 % apart; the largest reference mean is the last (half a window, [1.875, 2] mm).
+  CHECK(c.window_load_error == Approx(0.1).epsilon(1e-9));
+  CHECK(c.window_load_error_at == Approx(2e-3).epsilon(1e-12));
+  // A window of 0.5 mm: stations 0.5 ... 2 mm, the same largest error at the end.
+  CHECK(compare_runs(reference, stiffer, 0.5e-3).window_load_error == Approx(0.1).epsilon(1e-9));
   // Against itself every error is 0.
   const RunComparison self = compare_runs(reference, reference);
   CHECK(self.curve_error == 0);
   CHECK(self.peak_error == 0);
   CHECK(self.late_error == 0);
+  CHECK(self.final_error == 0);
 }
 
 TEST_CASE("Column runs are compared by their post-buckling load and against the Euler load", "[post]") {
@@ -74,14 +87,21 @@ TEST_CASE("Column runs are compared by their post-buckling load and against the 
   CHECK(c.late_error == Approx(-0.1).epsilon(1e-9));
   CHECK(c.euler_error == Approx(run.column->post_buckling_ratio - 1));
   CHECK(c.curve_error == Approx(0.1).epsilon(1e-9));
+  // metrics.csv's ripple against the Euler load: F = k u over the last quarter, 51 evenly
+  // spaced values, rms k du sqrt((n^2 - 1) / 12) (as in the checks below), over P_E.
+  const double ripple = 900 * 1e-5 * std::sqrt((51.0 * 51.0 - 1) / 12);
+  const std::vector<MetricCell> cells = metric_cells(run);
+  const auto cell = std::find_if(cells.begin(), cells.end(), [](const MetricCell& m) { return m.name == "load_ripple_to_euler"; });
+  REQUIRE(cell != cells.end());
+  CHECK(std::stod(cell->value) == Approx(ripple / run.column->euler_load).epsilon(1e-5));
 }
 
 TEST_CASE("comparison.csv has a row per reference and run and refuses an unknown reference", "[post]") {
   const std::vector<RunAnalysis> runs = {linear_run("a", 1000, 0), linear_run("b", 1100, 0)};
   const std::string csv = comparison_csv(runs, {"a", "b"}, {"made by a test"});
   CHECK_THAT(csv, Catch::Contains("reference,label,curve_error[1],peak_error[1]"));
-  CHECK_THAT(csv, Catch::Contains("\na,b,0.1,0.1,0.1,,0\n"));
-  CHECK_THAT(csv, Catch::Contains("\nb,b,0,0,0,,0\n"));
+  CHECK_THAT(csv, Catch::Contains("\na,b,0.1,0.1,0.1,,0,0.1,0.1,2\n"));
+  CHECK_THAT(csv, Catch::Contains("\nb,b,0,0,0,,0,0,0,0.25\n"));
   CHECK_THROWS_WITH(comparison_csv(runs, {"c"}, {}), Catch::Contains("--reference: c"));
 }
 
@@ -93,6 +113,11 @@ TEST_CASE("The checks find the energy balance error, where it passes 5 %, and th
   CHECK(c.balance_5pct_strain == Approx(1.01e-3 / 40e-3).epsilon(1e-9));
   CHECK(c.ke_over_se == Approx(0.3).epsilon(1e-9));
   CHECK(c.final_load == Approx(2.0).epsilon(1e-12));  // 1000 N/m x 2 mm
+  CHECK(c.energy_error_over_work == Approx(-0.1).epsilon(1e-9));  // signed: the scheme lost energy
+  CHECK(c.energy_secant_stiffness == Approx(1000).epsilon(1e-9));  // SE = k u² / 2
+  // KE = 0.3 SE on every row: also over the stiffness fit (metrics.csv).
+  CHECK(kinetic_over_strain(run, 0, 0.5e-3) == Approx(0.3).epsilon(1e-9));
+  CHECK(kinetic_over_strain(run, 3e-3, 4e-3) == 0);  // no rows there
   // F = k u over the last quarter: 51 evenly spaced values, rms about their mean
   // k du sqrt((n^2 - 1) / 12) with du = 0.01 mm.
   CHECK(c.load_ripple == Approx(1000 * 1e-5 * std::sqrt((51.0 * 51.0 - 1) / 12)).epsilon(1e-9));

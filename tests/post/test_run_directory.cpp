@@ -110,6 +110,7 @@ TEST_CASE("The specimen's mass, modulus and gauge length come from the scene and
   CHECK(run.series.rows() == 5);
   // Only the deformable body counts, at its real density (mass scaling 6 is numerical).
   CHECK(run.specimen.mass == Approx(12 * 2e-9 * 1200));
+  CHECK(run.specimen.volume == Approx(12 * 2e-9));
   CHECK(run.specimen.mass_scaling == 6);
   CHECK(run.specimen.youngs_modulus == Approx(8e6));
   CHECK(run.specimen.gauge_length == Approx(40e-3));

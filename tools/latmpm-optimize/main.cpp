@@ -34,7 +34,9 @@ points in a box), the volume bound and the methods; every dimensional value carr
 
 The output directory receives scene.toml (resolved), summary.toml (per method: iterations,
 seconds per iteration, volume fraction and compliance of the binary design at the
-optimisation resolution and on a grid refined twice), and per method <method>-history.csv,
+optimisation resolution and on a grid refined twice; with one load, the exported part's
+stiffness 2^mirrors F^2 / (2 C) from each compliance; the exported part's point volume),
+and per method <method>-history.csv,
 <method>-design.csv (x, y, z in mm, density, binary per quadrature point) and
 <method>-design.gp (gnuplot draws <method>-design.png), and the binary design as
 <method>-points.h5 (a point-set file for latmpm-solve: solid quadrature points, a planar
@@ -84,11 +86,13 @@ int optimize_main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   write_file_atomically(dir + "/scene.toml", scene.resolved_toml, "--output");
   std::vector<MethodOutcome> outcomes;
+  std::vector<ExportReport> exports;
   for (const std::string& method : scene.methods) {
     auto progress = [&](const IterationRecord& r) {
       if (!cl.flag_set("quiet"))
-        std::fprintf(stderr, "%s %4d  C %.6g J  v %.4f  t %.3f  points %zu  unknowns %zu  %.2f s\n", method.c_str(),
-                     r.iteration, r.compliance, r.volume_fraction, r.threshold, r.active_points, r.unknowns, r.seconds);
+        std::fprintf(stderr, "%s %4d  C %.6g J  v %.4f  t %.3f  points %zu  unknowns %zu  newton %d/%d  %.2f s\n",
+                     method.c_str(), r.iteration, r.compliance, r.volume_fraction, r.threshold, r.active_points, r.unknowns,
+                     r.newton_iterations, r.load_steps, r.seconds);
     };
     outcomes.push_back(run_method(scene, method, progress));
     const MethodOutcome& o = outcomes.back();
@@ -96,13 +100,14 @@ int optimize_main(int argc, char** argv) {
     const ExportReport exported = export_design(scene.grid, o.binary, symmetry_planes(scene.grid, scene.load_case),
                                                 dir + "/" + method + "-points.h5",
                                                 dir + "/" + method + "-part.stl", provenance);
+    exports.push_back(exported);
     std::printf("%s: %s %zu iterations (%s), %.3f s/iteration, volume %.2f %%, compliance %.6g J, refined %.6g J, "
                 "%zu corrections; %zu points, %zu triangles (%s, enclosed %.4g mm^3, points %.4g mm^3)\n",
                 cl.tool().c_str(), method.c_str(), o.result.history.size(), o.result.converged ? "converged" : "not converged",
                 o.seconds_per_iteration, 100 * o.volume_fraction, o.compliance_binary, o.compliance_refined, o.corrections, exported.points,
                 exported.triangles, exported.closed ? "closed" : "NOT closed", 1e9 * exported.surface_volume, 1e9 * exported.solid_volume);
   }
-  write_summary(dir, scene, outcomes, lines);
+  write_summary(dir, scene, outcomes, exports, lines);
   return exit_ok;
 }
 

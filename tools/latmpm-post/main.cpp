@@ -70,10 +70,13 @@ int post(int argc, char** argv) {
   cl.option("title", "TEXT", "title of the plots and the summary");
   cl.option("euler-k", "K", "effective-length factor of the column ends: 0.5 clamped-clamped, 0.7 clamped-pinned, "
                             "1 pinned-pinned, 2 clamped-free", "0.5");
-  cl.option("fit-range", "FROM:TO", "travel range of the initial-stiffness fit, e.g. 0mm:0.5mm "
-                                    "(default: 0 to half the first peak's travel)");
+  cl.option("fit-range", "FROM:TO", "travel range of the initial-stiffness fit, e.g. 0mm:0.5mm, or in percent "
+                                    "of each run's final travel, e.g. 20%:100% (default: 0 to half the first "
+                                    "peak's travel)");
   cl.repeated_option("reference", "LABEL", "compare every run with this one (a label): comparison.csv with the "
                                             "curve, peak, late-load and Euler errors and the largest KE/SE (make tradeoff)");
+  cl.option("window", "LENGTH", "travel window of comparison.csv's windowed load error (default: 1/8 of the "
+                                "reference's travel)");
   cl.option("plateau-strain", "FROM:TO", "strain range of the plateau load (ISO 13314: 0.2:0.3 or 0.2:0.4)", "0.2:0.3");
   cl.parse(argc, argv);
   if (!cl.given("output")) throw UsageError("missing -o OUT_DIR");
@@ -86,9 +89,23 @@ int post(int argc, char** argv) {
   if (!(options.euler_k > 0)) throw InputError("--euler-k", "", "must be positive");
   if (cl.given("fit-range")) {
     auto [from, to] = split_range(cl.text("fit-range"), "--fit-range");
-    options.compression.fit_from = parse_quantity(from, dimension::length, "--fit-range", "FROM");
-    options.compression.fit_to = parse_quantity(to, dimension::length, "--fit-range", "TO");
-    if (!(options.compression.fit_to > options.compression.fit_from))
+    const bool percent = !from.empty() && from.back() == '%';
+    if (percent != (!to.empty() && to.back() == '%'))
+      throw InputError("--fit-range", "", "FROM and TO must both be lengths or both percentages of the travel");
+    if (percent) {
+      auto fraction = [](const std::string& text, const char* which) {
+        const double value = parse_quantity(text.substr(0, text.size() - 1), dimension::none, "--fit-range", which);
+        if (!(value >= 0 && value <= 100)) throw InputError("--fit-range", which, "must lie within 0% to 100%");
+        return value / 100;
+      };
+      options.compression.fit_from_fraction = fraction(from, "FROM");
+      options.compression.fit_to_fraction = fraction(to, "TO");
+    } else {
+      options.compression.fit_from = parse_quantity(from, dimension::length, "--fit-range", "FROM");
+      options.compression.fit_to = parse_quantity(to, dimension::length, "--fit-range", "TO");
+    }
+    if (!(options.compression.fit_to > options.compression.fit_from ||
+          options.compression.fit_to_fraction > options.compression.fit_from_fraction))
       throw InputError("--fit-range", "", "TO must be above FROM");
   }
   {
@@ -130,6 +147,10 @@ int post(int argc, char** argv) {
   context.title = cl.text("title");
   context.euler_k = options.euler_k;
   context.references = cl.all("reference");
+  if (cl.given("window")) {
+    context.comparison_window = parse_quantity(cl.text("window"), dimension::length, "--window", "");
+    if (!(context.comparison_window > 0)) throw InputError("--window", "", "must be positive");
+  }
   for (const std::string& label : context.references)
     if (std::none_of(runs.begin(), runs.end(), [&](const post::RunAnalysis& a) { return a.run.label == label; }))
       throw InputError("--reference " + label, "", "not the label of one of the runs");
