@@ -21,7 +21,8 @@ void validate(const FieldContactSettings& contact, ShapeFunctionKind shape, Upda
   if (!contact.enabled) return;
   if (shape == ShapeFunctionKind::ddmp || shape == ShapeFunctionKind::cpdi1)
     throw InputError(where, "contact", "grid contact takes linear, ugimp, cpgimp and bspline shapes, not " +
-                                           to_string(shape) + " (its smoothed or vertex-based gradient has no per-field form yet)");
+                                           to_string(shape) +
+                                           " (its smoothed or vertex-based gradient has no per-field form yet)");
   if (scheme != UpdateScheme::usl)
     throw InputError(where, "contact", "grid contact runs the usl scheme only (this scene sets " + to_string(scheme) + ")");
 }

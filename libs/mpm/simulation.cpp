@@ -125,7 +125,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
                                               std::to_string(max_cell_coord) + " cells from the origin");
 
   if (settings_.field_contact.enabled)  // points in field order: Particles::contact_field
-    context_->grid_fields = make_contact_fields(settings_.field_contact, settings_.mass_scaling, points, bodies_, state_.particles.contact_field, where);
+    context_->grid_fields = make_contact_fields(settings_.field_contact, settings_.mass_scaling, points, bodies_,
+                                                state_.particles.contact_field, where);
   if (settings_.shape_function == ShapeFunctionKind::cpdi1)
     set_cpdi_domains(state_.particles, points, bodies_, settings_.cell_size, where);
   if (settings_.shape_function == ShapeFunctionKind::cpgimp && settings_.scheme == UpdateScheme::usl)

@@ -47,7 +47,8 @@ std::pair<Real, Real> extent(const Simulation& sim, int body, int axis, const st
   const Particles& ps = sim.particles();
   Real lo = 1e30, hi = -1e30;
   for (size_t i = 0; i < ps.size(); ++i)
-    if (ps.body[i] == body && (!select || select(i))) lo = std::min(lo, ps.position[i][axis]), hi = std::max(hi, ps.position[i][axis]);
+    if (ps.body[i] == body && (!select || select(i)))
+      lo = std::min(lo, ps.position[i][axis]), hi = std::max(hi, ps.position[i][axis]);
   return {lo, hi};
 }
 
@@ -151,8 +152,9 @@ namespace {
 // it side by side, touching along the plane x = 2 mm (a slit). The arms swing in y in
 // opposite directions (v_y = ±v0 (z − 2 mm)/10 mm), sliding along each other. `arms`: which
 // arms exist (1 left, 2 right, 3 both). Returns the mean y displacement of each arm's tip
-// (points with z > 10 mm at the start) at `end`, and the largest distance an arm's lowest
-// points moved from the base's top points (the joint: bonded fields must not part there).
+// (points with z > 10 mm at the start) at `end`, the largest vertical displacement of the
+// arms' lowest points (on the held base: bonded fields must not part at the joint) and the
+// smallest width of the slit between the arms.
 struct Fork {
   Real left_tip = 0, right_tip = 0, joint_opening = 0, min_slit = 1e30;
 };
@@ -167,7 +169,8 @@ Fork fork_swinging(Real h, bool contact, int arms, Real v0, Real end) {
   tag_points(points, "base", [&](size_t p) { return points.position[p][2] < 0.5e-3; });
   BodySettings fork = deformable("fork", elastic(E, 0.3, rho));
   fork.hold_tag = "base";
-  Simulation sim(points, {fork}, contact_settings(h, contact, 0, contact ? std::vector<std::string>{"left", "right"} : std::vector<std::string>{}));
+  const std::vector<std::string> groups = contact ? std::vector<std::string>{"left", "right"} : std::vector<std::string>{};
+  Simulation sim(points, {fork}, contact_settings(h, contact, 0, groups));
   Particles& ps = sim.mutable_particles();
   for (size_t i = 0; i < ps.size(); ++i) {
     const Vec3& x = ps.position[i];
@@ -181,11 +184,10 @@ Fork fork_swinging(Real h, bool contact, int arms, Real v0, Real end) {
       const Eigen::Vector3d& x0 = points.position[q.id[i]];
       const int side = x0[0] < 2e-3 ? 0 : 1;
       if (x0[2] > 10e-3) tip[side] += q.position[i][1] - x0[1], count[side] += 1;
-      if (x0[2] > 2e-3 && x0[2] < 2.5e-3) {  // the arms' lowest points against the base's top ones below them
-        const Real opening = std::abs(q.position[i][2] - x0[2]) ;
-        out.joint_opening = std::max(out.joint_opening, opening);
-      }
-      if (x0[2] > 2e-3) (side == 0 ? left_hi = std::max(left_hi, q.position[i][0]) : right_lo = std::min(right_lo, q.position[i][0]));
+      if (x0[2] > 2e-3 && x0[2] < 2.5e-3)  // the arms' lowest points
+        out.joint_opening = std::max(out.joint_opening, std::abs(q.position[i][2] - x0[2]));
+      if (x0[2] > 2e-3 && side == 0) left_hi = std::max(left_hi, q.position[i][0]);
+      if (x0[2] > 2e-3 && side == 1) right_lo = std::min(right_lo, q.position[i][0]);
     }
     out.left_tip = count[0] > 0 ? tip[0] / count[0] : 0;
     out.right_tip = count[1] > 0 ? tip[1] / count[1] : 0;
