@@ -5,11 +5,13 @@
 #   plates, cell 1 mm), uGIMP, E = 10 MPa, nu = 0.4, the lattice-compression scene. The runs
 #   are the rows of pipelines/lattice-stiffness/cases-{quick,paper}.txt: per lattice
 #   "initial" (linear elastic, one increment of 0.1 mm: k, and E* = k H / A with H the height
-#   between the plates and A the footprint, from latmpm-lattice's report) and "path"
+#   between the plates and A the footprint, both computed by latmpm-post from the parameters
+#   latmpm-lattice records) and "path"
 #   (neo-Hookean, increments to 20 mm / 4 mm: where the load falls or Newton fails).
 # make lattice-stiffness-initial [QUICK=1]: only the initial stiffness (seconds per lattice).
 # Results in results/lattice-stiffness/{paper,quick}/: stiffness.md (table), stiffness.csv,
-# stiffness.png, run-<lattice>-{initial,path}/ (run directories).
+# stiffness.png, initial/ (latmpm-post over the initial runs), run-<lattice>-{initial,path}/
+# (run directories).
 include pipelines/common.mk
 
 LS_SRC      := pipelines/lattice-stiffness
@@ -36,23 +38,16 @@ lattice-stiffness-results: $(LS_OUT)/stiffness.md
 	@echo "lattice-stiffness: results in $<"
 
 LS_INITIAL := $(foreach r,$(LS_SELECTED),$(if $(filter %-initial,$(call pipeline_field,$r,1)),$r))
-lattice-stiffness-initial: $(call ls_runs_done,$(LS_INITIAL)) \
-    $(foreach l,$(call ls_lattices,$(LS_INITIAL)),$(LS_OUT)/geometry-$l.txt)
-	bash $(LS_SRC)/table.sh $(LS_OUT) $(LS_PLATES:mm=) $(call ls_lattices,$(LS_INITIAL))
+lattice-stiffness-initial: $(call ls_runs_done,$(LS_INITIAL)) | $(BIN)/latmpm-post
+	bash $(LS_SRC)/table.sh $(BIN) $(LS_OUT) $(call ls_lattices,$(LS_INITIAL))
 
-$(LS_OUT)/stiffness.md: $(call ls_runs_done,$(LS_SELECTED)) \
-    $(foreach l,$(call ls_lattices,$(LS_SELECTED)),$(LS_OUT)/geometry-$l.txt) $(LS_SRC)/table.sh pipelines/lattice-stiffness.mk
-	bash $(LS_SRC)/table.sh $(LS_OUT) $(LS_PLATES:mm=) $(call ls_lattices,$(LS_SELECTED))
+$(LS_OUT)/stiffness.md: $(call ls_runs_done,$(LS_SELECTED)) $(LS_SRC)/table.sh pipelines/lattice-stiffness.mk \
+    | $(BIN)/latmpm-post
+	bash $(LS_SRC)/table.sh $(BIN) $(LS_OUT) $(call ls_lattices,$(LS_SELECTED))
 
 $(LS_OUT)/geometry-%.h5: | $(BIN)/latmpm-lattice
 	@mkdir -p $(@D)
 	$(BIN)/latmpm-lattice --preset $* --cells $(LS_CELLS) --plates $(LS_PLATES) --quiet -o $@
-
-# latmpm-lattice's report (bounding box, footprint volume; on stderr) for the modulus.
-$(LS_OUT)/geometry-%.txt: | $(BIN)/latmpm-lattice
-	@mkdir -p $(@D)
-	$(BIN)/latmpm-lattice --preset $* --cells $(LS_CELLS) --plates $(LS_PLATES) -o $(@:.txt=-report.h5) 2> $@ \
-	  && rm -f $(@:.txt=-report.h5)
 
 $(LS_OUT)/points-%.h5: $(LS_OUT)/geometry-%.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(LS_CELL) --ppc 2 --quiet -o $@

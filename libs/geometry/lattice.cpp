@@ -190,6 +190,10 @@ StrutGraph build_lattice(const LatticeSpec& spec) {
   p["layer_height"] = quantity_text(lattice.layer_height, "m");
   p["lattice_zmin"] = quantity_text(zmin, "m");  // strut-node range: plates meet the lattice here
   p["lattice_zmax"] = quantity_text(zmax, "m");
+  // The struts' x–y bounding box, radius included: the area an effective modulus
+  // E* = k H / A refers to (docs/post.md), and the footprint of the relative density.
+  const Eigen::AlignedBox3d footprint = solid_bounds(g, true);
+  p["footprint_area"] = quantity_text(footprint.sizes().x() * footprint.sizes().y(), "m^2");
   p["plate_thickness"] = quantity_text(spec.plate_thickness, "m");
   if (spec.plate_thickness > 0) p["plate_margin"] = quantity_text(spec.plate_margin, "m");
   return lattice.graph;

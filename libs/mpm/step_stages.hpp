@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
+#include "mpm/ddmp_small_mass.hpp"
 #include "mpm/domain.hpp"
 #include "mpm/grid_update.hpp"
 #include "mpm/rigid_contact.hpp"

@@ -60,19 +60,35 @@ std::vector<double> efficiency_length(const std::vector<double>& u, const std::v
 }
 
 CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, double mass,
-                                       const CompressionSettings& s) {
+                                       const CompressionSettings& s, double footprint_area) {
   CompressionMetrics m;
   const Curve raw{h.displacement, h.load};
   const Curve curve = monotone_prefix(raw);
-  if (curve.size() < 3 || !(curve.x.back() > curve.x.front())) {
-    m.notes.push_back("fewer than three rows of increasing travel: no compression metrics");
+  const bool have_gauge = std::isfinite(gauge) && gauge > 0;
+  // E* = k H / A, once the stiffness is known.
+  auto set_stiffness = [&](double from, double to) {
+    m.fit_from = from, m.fit_to = to;
+    m.stiffness = fitted_slope(curve, from, to);
+    if (std::isnan(m.stiffness))
+      m.notes.push_back("initial stiffness: fewer than two rows in the fit range " + mm(from) + " to " + mm(to));
+    else if (!have_gauge || !(footprint_area > 0))
+      m.notes.push_back("effective modulus: no gauge length or footprint_area in the point files' parameters");
+    else
+      m.effective_modulus = m.stiffness * gauge / footprint_area;
+  };
+  if (curve.size() < 2 || !(curve.x.back() > curve.x.front())) {
+    m.notes.push_back("fewer than two rows of increasing travel: no compression metrics");
     return m;
   }
   if (curve.size() < raw.size())
     m.notes.push_back("the travel goes back after " + mm(curve.x.back()) + ": metrics use the curve up to there");
   const double travel = curve.x.back();
   m.final_displacement = travel;
-  const bool have_gauge = std::isfinite(gauge) && gauge > 0;
+  if (curve.size() == 2) {  // one static increment: its secant is the stiffness, nothing else is
+    m.notes.push_back("two rows of travel: only the initial stiffness (their secant) and the effective modulus");
+    set_stiffness(std::isfinite(s.fit_from) ? s.fit_from : curve.x.front(), std::isfinite(s.fit_to) ? s.fit_to : travel);
+    return m;
+  }
 
   // The binned curve: solver oscillation averaged out, evenly spaced in u.
   double bin = s.bin;
@@ -113,14 +129,11 @@ CompressionMetrics compression_metrics(const LoadHistory& h, double gauge, doubl
   }
 
   // Initial stiffness: linear least squares over the initial range.
-  m.fit_from = std::isfinite(s.fit_from) ? s.fit_from : settled > 0 ? m.transient_end : curve.x.front();
-  m.fit_to = std::isfinite(s.fit_to) ? s.fit_to
-             : fp >= 0              ? 0.5 * (m.fit_from + m.first_peak_displacement)
-             : have_gauge           ? std::min(m.fit_from + 0.02 * gauge, travel)
-                                    : m.fit_from + 0.1 * travel;
-  m.stiffness = fitted_slope(curve, m.fit_from, m.fit_to);
-  if (std::isnan(m.stiffness))
-    m.notes.push_back("initial stiffness: fewer than two rows in the fit range " + mm(m.fit_from) + " to " + mm(m.fit_to));
+  const double fit_from = std::isfinite(s.fit_from) ? s.fit_from : settled > 0 ? m.transient_end : curve.x.front();
+  set_stiffness(fit_from, std::isfinite(s.fit_to) ? s.fit_to
+                          : fp >= 0              ? 0.5 * (fit_from + m.first_peak_displacement)
+                          : have_gauge           ? std::min(fit_from + 0.02 * gauge, travel)
+                                                 : fit_from + 0.1 * travel);
 
   // Plateau (ISO 13314): mean load between two strains.
   if (!have_gauge) {

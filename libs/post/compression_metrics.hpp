@@ -21,6 +21,9 @@
 //                      with F ≥ 10 % of the largest load so far
 //   absorbed energy    W = ∫ F du (trapezoid) to the end, and to the densification onset
 //   SEA                W / m, m the specimen's mass (real density, not mass-scaled)
+//   effective modulus  E* = k H / A: the initial stiffness k times the gauge length H over the
+//                      footprint area A (the homogenised Young's modulus of the specimen)
+// A curve of two rows (one static increment) has only the stiffness, their secant, and E*.
 // Everything SI. A metric that cannot be had is NaN and `notes` says why.
 #pragma once
 #include <limits>
@@ -55,6 +58,7 @@ struct CompressionMetrics {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double transient_end = 0;  // m: travel at which the start-up transient ends (0: none found)
   double stiffness = none, fit_from = none, fit_to = none;  // N/m, m, m
+  double effective_modulus = none;                          // Pa
   double peak_load = none, peak_displacement = none, peak_time = none;
   double first_peak_load = none, first_peak_displacement = none;
   double plateau_load = none, plateau_from = none, plateau_to = none;  // N, m, m
@@ -65,9 +69,11 @@ struct CompressionMetrics {
   std::vector<std::string> notes;
 };
 
-// `gauge_length` (m) turns travel into strain; `mass` (kg) gives SEA. Either may be NaN.
+// `gauge_length` (m) turns travel into strain; `mass` (kg) gives SEA; `footprint_area` (m²)
+// with the gauge length gives E*. Any may be NaN.
 CompressionMetrics compression_metrics(const LoadHistory& history, double gauge_length, double mass,
-                                       const CompressionSettings& settings = {});
+                                       const CompressionSettings& settings = {},
+                                       double footprint_area = std::numeric_limits<double>::quiet_NaN());
 
 // The energy efficiency η·H = ∫₀ᵘ F du / F(u) at each point of a curve ascending in u (m);
 // NaN where F ≤ 0. Exposed for tests and plots.

@@ -26,14 +26,14 @@ std::string at(double value, double where, int digits = 4) {
 
 void compression_table(std::ostream& md, const std::vector<const RunAnalysis*>& runs) {
   md << "## Compression\n\n"
-     << "| run | initial stiffness (N/mm) | fit range (mm) | peak load (N) at u (mm) | first peak (N) at u (mm) "
+     << "| run | initial stiffness (N/mm) | fit range (mm) | E* (MPa) | peak load (N) at u (mm) | first peak (N) at u (mm) "
         "| plateau load (N) | plateau range (mm) | densification onset u (mm) | onset strain | absorbed energy (J) "
         "| to onset (J) | SEA (J/kg) | SEA to onset (J/kg) |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const RunAnalysis* a : runs) {
     const CompressionMetrics& c = *a->compression;
     md << "| " << cell(legend(*a)) << " | " << num(c.stiffness / 1e3) << " | " << number_text(c.fit_from * 1e3, 3)
-       << "–" << number_text(c.fit_to * 1e3, 3) << " | " << at(c.peak_load, c.peak_displacement * 1e3) << " | "
+       << "–" << number_text(c.fit_to * 1e3, 3) << " | " << num(c.effective_modulus / 1e6) << " | " << at(c.peak_load, c.peak_displacement * 1e3) << " | "
        << at(c.first_peak_load, c.first_peak_displacement * 1e3) << " | " << num(c.plateau_load) << " | "
        << (std::isfinite(c.plateau_from) ? number_text(c.plateau_from * 1e3, 3) + "–" + number_text(c.plateau_to * 1e3, 3)
                                          : "–")

@@ -62,6 +62,7 @@ std::vector<MetricCell> metric_cells(const RunAnalysis& a) {
   add("initial_stiffness", "N/mm", c.stiffness / mm);
   add("stiffness_fit_from", "mm", c.fit_from * mm);
   add("stiffness_fit_to", "mm", c.fit_to * mm);
+  add("effective_modulus", "MPa", c.effective_modulus * 1e-6);
   add("peak_load", "N", c.peak_load);
   add("peak_displacement", "mm", c.peak_displacement * mm);
   add("peak_time", "ms", c.peak_time * ms);

@@ -88,7 +88,7 @@ RunAnalysis analyse_run(RunDirectory run, const AnalysisOptions& options) {
     a.impact = impact_metrics(a.impact_history);
     a.notes.insert(a.notes.end(), a.impact->notes.begin(), a.impact->notes.end());
   } else if (a.has_travel) {
-    a.compression = compression_metrics(a.history, f.gauge_length, f.mass, options.compression);
+    a.compression = compression_metrics(a.history, f.gauge_length, f.mass, options.compression, f.footprint_area);
     if (a.kind == TestKind::column) {
       a.column = column_metrics(a.history, f.youngs_modulus, f.strut_diameter, f.strut_length, options.euler_k);
       a.notes.insert(a.notes.end(), a.column->notes.begin(), a.column->notes.end());

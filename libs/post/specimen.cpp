@@ -27,10 +27,15 @@ double scene_quantity(const toml::node* node, const Dimension& dimension, const 
   }
 }
 
-double length_parameter(const PointSet& points, const std::string& key, const std::string& file) {
+double quantity_parameter(const PointSet& points, const std::string& key, const Dimension& dimension,
+                          const std::string& file) {
   auto it = points.parameters.find(key);
   if (it == points.parameters.end()) return SpecimenFacts::unknown;
-  return parse_quantity(it->second, dimension::length, file, "/points/parameters/" + key);
+  return parse_quantity(it->second, dimension, file, "/points/parameters/" + key);
+}
+
+double length_parameter(const PointSet& points, const std::string& key, const std::string& file) {
+  return quantity_parameter(points, key, dimension::length, file);
 }
 
 }  // namespace
@@ -90,6 +95,8 @@ SpecimenFacts read_specimen_facts(const std::string& scene_path) {
         if (std::isnan(facts.strut_length)) facts.strut_length = length_parameter(points, "strut_length", file);
         if (std::isnan(facts.gauge_length))
           facts.gauge_length = length_parameter(points, "lattice_zmax", file) - length_parameter(points, "lattice_zmin", file);
+        if (std::isnan(facts.footprint_area))
+          facts.footprint_area = quantity_parameter(points, "footprint_area", dimension::area, file);
       } catch (const InputError& e) {
         facts.notes.push_back(std::string("point file unreadable (") + e.what() + "): no mass or geometry from it");
         mass_known = false;

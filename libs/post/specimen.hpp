@@ -26,6 +26,7 @@ struct SpecimenFacts {
   double strut_diameter = unknown;    // m (t)
   double strut_length = unknown;      // m (L)
   double gauge_length = unknown;      // m, lattice_zmax − lattice_zmin: the height strain refers to
+  double footprint_area = unknown;    // m², the struts' x–y bounding box (latmpm-lattice)
   std::vector<std::string> point_files;
   std::vector<std::string> notes;     // facts that could not be found, and why
 };

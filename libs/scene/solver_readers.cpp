@@ -129,6 +129,7 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   s.tolerance = solver.number("tolerance", s.tolerance);
   if (!(s.tolerance > 0 && s.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
   s.check_stability = solver.boolean("check_stability", s.check_stability);
+  s.predictor = solver.boolean("predictor", s.predictor);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

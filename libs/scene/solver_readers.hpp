@@ -28,7 +28,7 @@ void read(TableReader& material, mpm::MaterialParameters& parameters);
 void read(TableReader& body, mpm::RigidBodySettings& settings);
 
 // [solver] of a static run: increments, linear_solver, tolerance, check_stability,
-// stabilisation.
+// predictor, stabilisation.
 void read(TableReader& solver, statics::StaticSettings& settings);
 
 }  // namespace latmpm::scene_toml

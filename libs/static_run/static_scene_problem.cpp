@@ -115,6 +115,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   out.loading.travel = scene.end.value;
   out.loading.increments = scene.solver.statics.increments;
   out.loading.check_stability = scene.solver.statics.check_stability;
+  out.loading.predictor = scene.solver.statics.predictor;
   out.problem->set_stabilisation(scene.solver.statics.stabilisation);
   return out;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
@@ -16,6 +17,7 @@
 #include "scene/scene_points.hpp"
 #include "static_run/static_scene_problem.hpp"
 #include "statics/elastic_energy.hpp"
+#include "statics/phase_time.hpp"
 
 namespace latmpm {
 
@@ -69,13 +71,33 @@ ParticleSnapshot static_snapshot(const PointSet& points, const Scene& scene, con
   }
   return s;
 }
+
+// Where the seconds went, wall/CPU (docs/statics.md, "Where the seconds go"). The check's
+// assembly and factorisation are also in those columns; "forces, energy, line search" is
+// the rest of the path.
+void log_phase_times(RunLog& log, const statics::PhaseTime& set_up, const statics::PhaseTime& assembly,
+                     const statics::SolverTimes& solver, const statics::PhaseTime& check,
+                     const statics::PhaseTime& output, const statics::PhaseTime& path) {
+  statics::PhaseTime rest = path;
+  for (const statics::PhaseTime* t : {&assembly, &solver.analyse, &solver.factorise, &solver.solve, &output})
+    rest.wall -= t->wall, rest.cpu -= t->cpu;
+  rest.calls = 1;
+  log.line("time (wall/CPU): " + statics::describe("set-up (points, band, pattern)", set_up) + ", " +
+           statics::describe("assembly", assembly) + ", " + statics::describe("analysis", solver.analyse) + ", " +
+           statics::describe("factorisation", solver.factorise) + ", " + statics::describe("solve", solver.solve) +
+           ", " + statics::describe("forces, energy, line search", rest) + ", " + statics::describe("output", output) +
+           "; of these the stability check " + statics::describe("", check).substr(1));
+}
 }  // namespace
 
 StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, const std::string& run_dir,
                                     bool progress) {
   const auto start = std::chrono::steady_clock::now();
+  statics::PhaseTime set_up, output, path_time;
+  std::optional<statics::PhaseTimer> set_up_timer(set_up);
   PointSet points = load_scene_points(scene, &provenance);
   StaticSceneProblem sp = make_static_problem(scene, points);
+  set_up_timer.reset();
   statics::StaticProblem& problem = *sp.problem;
   const statics::LinearSolverKind solver_kind = scene.solver.statics.linear_solver;
   statics::NewtonOptions newton;
@@ -123,6 +145,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
 
   long step = 0;
   auto observe = [&](const statics::PathPoint& pt, const statics::Vector& u) {
+    statics::PhaseTimer timer(output);
     ++step;
     series.append({double(step), pt.travel / speed, pt.travel, pt.load, pt.support_load, pt.energy,
                    double(pt.newton_iterations), double(pt.linear_iterations), pt.residual, pt.min_jacobian,
@@ -130,7 +153,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     snapshots.write(static_snapshot(points, scene, sp, u, pt.travel, step, pt.travel / speed));
     const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
                              " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
-                             std::to_string(pt.newton_iterations) + ", linear " +
+                             std::to_string(pt.newton_iterations) + (pt.predicted ? " from the predictor" : "") + ", linear " +
                              std::to_string(pt.linear_iterations) + " (last residual " +
                              format_number("%.1e", pt.linear_residual) + "), residual " + format_number("%.2e", pt.residual) +
                              ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");
@@ -143,8 +166,11 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   std::vector<statics::Vec3> node_positions(problem.band().node_count());  // the AMG's rigid-body modes
   for (size_t n = 0; n < node_positions.size(); ++n) node_positions[n] = problem.band().node_position(n);
   solver.set_node_positions(std::move(node_positions));
+  std::optional<statics::PhaseTimer> path_timer(path_time);
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
+  path_timer.reset();
   log.line("linear solver: " + solver.describe());
+  log_phase_times(log, set_up, problem.assembly_time(), solver.times(), path.stability_check, output, path_time);
   series.save();
 
   StaticSolveSummary s;

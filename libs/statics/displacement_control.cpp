@@ -1,5 +1,7 @@
 #include "statics/displacement_control.hpp"
 
+#include <memory>
+
 #include "core/errors.hpp"
 
 namespace latmpm::statics {
@@ -19,24 +21,56 @@ Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const V
   return load;
 }
 
-// A direct solver for the stability check: CG and AMG cannot tell an indefinite matrix.
-LinearSolverKind direct_kind(LinearSolverKind kind) {
-  return kind == LinearSolverKind::ldlt ? kind : LinearSolverKind::cholmod;
-}
 }  // namespace
 
 PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, SparseSolver& solver,
                           const NewtonOptions& newton, const IncrementObserver& observe) {
   if (loading.increments < 1) throw InputError("static solver", "increments", "must be at least 1");
   PathReport report;
-  SparseSolver check(direct_kind(solver.kind()));
+  // The stability check needs a direct solver (CG and AMG cannot tell an indefinite
+  // matrix): the Newton solver where it is one, else a CHOLMOD of its own, made on first use.
+  std::unique_ptr<SparseSolver> own_check;
+  auto check_solver = [&]() -> SparseSolver& {
+    if (solver.is_direct()) return solver;
+    if (!own_check) own_check = std::make_unique<SparseSolver>(LinearSolverKind::cholmod);
+    return *own_check;
+  };
+  // The last stable equilibrium u at stable_travel, and the one before it (the predictor's
+  // second point).
   Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
+  Real stable_travel = 0;
+  Vector u_before;
+  Real travel_before = 0;
+  auto accept = [&](const Vector& state, Real travel) {
+    u_before.swap(u);
+    travel_before = stable_travel;
+    u = state;
+    stable_travel = travel;
+  };
 
   // Solves at `travel` from u; true when it converged (u, point updated), false otherwise.
+  // With the predictor, Newton starts from the secant extrapolation of the last two
+  // equilibria (its prescribed unknowns exact); where that inverts a point or does not
+  // converge, from u itself, as without it.
   auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure) {
     const Dirichlet conditions = platen_conditions(problem, loading, travel);
     Vector trial = state;
-    const NewtonReport r = solve_equilibrium(problem, conditions, trial, solver, newton);
+    NewtonReport r;
+    bool predicted = false;
+    if (loading.predictor && u_before.size() == state.size() && stable_travel > travel_before) {
+      trial += (travel - stable_travel) / (stable_travel - travel_before) * (state - u_before);
+      for (size_t i = 0; i < conditions.fixed.size(); ++i)
+        if (conditions.fixed[i]) trial[Eigen::Index(i)] = conditions.value[Eigen::Index(i)];
+      predicted = problem.is_quadratic() || problem.min_jacobian(trial) > 0;
+      if (predicted) r = solve_equilibrium(problem, conditions, trial, solver, newton);
+    }
+    point.predicted = predicted && r.converged;
+    if (!point.predicted) {
+      const int spent = r.iterations;  // from an abandoned prediction: counted too
+      trial = state;
+      r = solve_equilibrium(problem, conditions, trial, solver, newton);
+      r.iterations += spent;
+    }
     if (!r.converged) {
       failure = r.failure;
       return false;
@@ -54,16 +88,16 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.min_jacobian = r.min_jacobian;
     point.stable = true;
     if (loading.check_stability) {
+      PhaseTimer timer(report.stability_check);
       problem.assemble_hessian(state, false);
       SparseMatrix& K = problem.hessian();
       constrain_rows_and_columns(K, conditions.fixed, mean_diagonal(K));
-      point.stable = check.factorize(K);
+      point.stable = check_solver().factorize(K);
     }
     return true;
   };
 
   const Real step = loading.travel / loading.increments;
-  Real stable_travel = 0;
   for (int i = 1; i <= loading.increments; ++i) {
     PathPoint point;
     std::string failure;
@@ -74,8 +108,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
                            point.load < report.points.back().load;
     if (past_peak) point.stable = false;
     if (converged && point.stable) {
-      u = next;
-      stable_travel = point.travel;
+      accept(next, point.travel);
       report.points.push_back(point);
       if (observe) observe(point, u);
       continue;
@@ -95,7 +128,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
           trial_point.load < report.points.back().load)
         trial_point.stable = false;
       if (trial_converged && trial_point.stable) {
-        u = trial;
+        accept(trial, mid);
         low = mid;
         report.points.push_back(trial_point);
         if (observe) observe(trial_point, u);

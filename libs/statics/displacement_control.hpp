@@ -6,7 +6,9 @@
 // (unprojected) tangent is factorised: the static path ends at the first increment where it
 // is not positive definite (a bifurcation or limit point: buckling), where the load falls
 // (past a limit point; the only check where the true tangent is unusable, docs/statics.md)
-// or where Newton fails; the travel there is bracketed by bisection.
+// or where Newton fails; the travel there is bracketed by bisection. The check factorises
+// with the Newton solver itself when that is direct (one analysis, one factor in memory:
+// the next Newton step refactorises anyway), else with its own CHOLMOD.
 #pragma once
 #include <functional>
 #include <string>
@@ -25,6 +27,9 @@ struct PlatenLoading {
   bool check_stability = true;        // factorise the true tangent after each increment
   bool end_at_load_maximum = true;    // a falling load also ends the path (a limit point)
   int bisections = 6;                 // halvings of the bracket around the instability
+  // Start each increment's Newton from the secant extrapolation of the last two equilibria
+  // (from the last one where that inverts a point or does not converge).
+  bool predictor = true;
 };
 
 struct PathPoint {
@@ -32,7 +37,8 @@ struct PathPoint {
   Real load = 0;            // N: force the platen exerts along its motion
   Real support_load = 0;    // N: force the supports exert against it
   Real energy = 0;          // J: stored elastic energy
-  int newton_iterations = 0;
+  int newton_iterations = 0;  // including any spent from an abandoned prediction
+  bool predicted = false;     // converged from the predictor's start
   int linear_iterations = 0;
   Real linear_residual = 0;  // ‖K d − r‖ / ‖r‖ of the last linear solve
   Real residual = 0;        // final relative residual
@@ -48,6 +54,7 @@ struct PathReport {
   Real end_load = 0;              // N: the load there (interpolated), or the last stable load
   Real last_stable_travel = 0;    // m: the last travel found stable
   Real last_stable_load = 0;      // N: the load there
+  PhaseTime stability_check;      // true-tangent assemblies and factorisations after increments
 };
 
 // Called after each converged increment with its point and displacement field.

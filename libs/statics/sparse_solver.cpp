@@ -58,28 +58,45 @@ bool SparseSolver::factorize(const SparseMatrix& K) {
   Impl& s = *impl_;
   s.matrix = &K;
   if (used_ == LinearSolverKind::automatic) {  // CHOLMOD's symbolic analysis says how big L gets
+    PhaseTimer timer(times_.analyse);
     s.cholmod.analyse(K);
     const double factor_bytes = s.cholmod.figures().factor_nonzeros * sizeof(Real);
     used_ = factor_bytes > factor_memory_budget_ ? LinearSolverKind::amg : LinearSolverKind::cholmod;
   }
   switch (used_) {
     case LinearSolverKind::ldlt:
-      if (!s.analysed) s.ldlt.analyzePattern(K);
+      if (!s.analysed) {
+        PhaseTimer timer(times_.analyse);
+        s.ldlt.analyzePattern(K);
+      }
       s.analysed = true;
-      s.ldlt.factorize(K);
+      {
+        PhaseTimer timer(times_.factorise);
+        s.ldlt.factorize(K);
+      }
       return s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
-    case LinearSolverKind::cg:
+    case LinearSolverKind::cg: {
+      PhaseTimer timer(times_.factorise);
       s.cg.compute(K);  // the incomplete factorisation is redone for each matrix
       return s.cg.info() == Eigen::Success;
-    case LinearSolverKind::cholmod:
-      if (!s.cholmod.analysed()) s.cholmod.analyse(K);
+    }
+    case LinearSolverKind::cholmod: {
+      if (!s.cholmod.analysed()) {
+        PhaseTimer timer(times_.analyse);
+        s.cholmod.analyse(K);
+      }
+      PhaseTimer timer(times_.factorise);
       return s.cholmod.factorize(K);
+    }
     case LinearSolverKind::amg:
       if (!s.amg) {
         s.amg = std::make_unique<HypreAmg>(iterative_tolerance_, iterative_max_iterations_);
         s.amg->set_node_positions(s.node_positions);
       }
-      s.amg->setup(K);
+      {
+        PhaseTimer timer(times_.factorise);
+        s.amg->setup(K);
+      }
       s.analysed = true;
       return true;
     case LinearSolverKind::automatic: break;
@@ -104,6 +121,7 @@ std::string SparseSolver::describe() const {
 
 Vector SparseSolver::solve(const Vector& b, LinearSolveStats& stats) {
   Impl& s = *impl_;
+  PhaseTimer timer(times_.solve);
   Vector x;
   stats.iterations = 1;
   switch (used_) {

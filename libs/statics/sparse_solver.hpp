@@ -13,11 +13,19 @@
 #include <vector>
 
 #include "statics/band_matrix.hpp"
+#include "statics/phase_time.hpp"
 #include "statics/static_problem.hpp"
 #include "statics/static_settings.hpp"  // LinearSolverKind
 
 namespace latmpm::statics {
 
+
+// Where a solver's time went (the run log's profile line).
+struct SolverTimes {
+  PhaseTime analyse;    // ordering and symbolic analysis (once per pattern; LDLT, CHOLMOD)
+  PhaseTime factorise;  // numeric factorisations, or the AMG / incomplete-Cholesky set-ups
+  PhaseTime solve;      // triangular solves or iterations
+};
 
 struct LinearSolveStats {
   int iterations = 0;             // CG / PCG iterations (1 for a direct solve)
@@ -35,6 +43,10 @@ class SparseSolver {
   SparseSolver& operator=(const SparseSolver&) = delete;
 
   LinearSolverKind kind() const { return kind_; }
+  // Whether factorize() tells a positive definite matrix from one that is not (LDLT,
+  // CHOLMOD, or "auto" once it chose CHOLMOD): such a solver can also do stability checks.
+  bool is_direct() const { return used_ == LinearSolverKind::ldlt || used_ == LinearSolverKind::cholmod; }
+  const SolverTimes& times() const { return times_; }
   // Node positions (m) for the AMG's rigid-body modes (node n: unknowns 3n..3n+2).
   void set_node_positions(std::vector<Vec3> positions);
   // The solver's name and, once used, CHOLMOD's ordering, nnz(L) and flop count or the
@@ -55,6 +67,7 @@ class SparseSolver {
   Real iterative_tolerance_;
   int iterative_max_iterations_;
   double factor_memory_budget_;
+  SolverTimes times_;
   std::unique_ptr<Impl> impl_;
 };
 

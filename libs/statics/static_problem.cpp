@@ -105,6 +105,7 @@ bool StaticProblem::is_quadratic() const {
 }
 
 void StaticProblem::assemble_hessian(const Vector& u, bool projected) {
+  PhaseTimer timer(assembly_time_);
   if (is_quadratic()) {  // constant tangents, positive semidefinite for λ, μ ≥ 0
     std::vector<Mat9> tangent(energies_.size());
     for (size_t m = 0; m < energies_.size(); ++m) tangent[m] = energies_[m].tangent(Mat3::Identity());

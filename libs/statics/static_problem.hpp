@@ -11,6 +11,7 @@
 #include "statics/band_matrix.hpp"
 #include "statics/elastic_energy.hpp"
 #include "statics/narrow_band.hpp"
+#include "statics/phase_time.hpp"
 
 namespace latmpm::statics {
 
@@ -56,6 +57,8 @@ class StaticProblem {
   // (projected Newton) or not (the true tangent, for stability checks).
   void assemble_hessian(const Vector& u, bool projected);
   SparseMatrix& hessian() { return matrix_.matrix(); }
+  // Time spent in assemble_hessian (the run log's profile line).
+  const PhaseTime& assembly_time() const { return assembly_time_; }
 
  private:
   template <class F>
@@ -69,7 +72,8 @@ class StaticProblem {
   BandMatrix matrix_;
   Real stabilisation_ = 0;
   std::vector<Real> stabilisation_blocks_;  // scalar Hessian of E_s per node pair (empty: none)
-  std::vector<Mat9> point_tangent_;  // V_p ∂P/∂F of the last assembly (non-quadratic energies)
+  std::vector<Mat9> point_tangent_;
+  PhaseTime assembly_time_;  // V_p ∂P/∂F of the last assembly (non-quadratic energies)
 };
 
 }  // namespace latmpm::statics

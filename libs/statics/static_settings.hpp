@@ -25,6 +25,7 @@ struct StaticSettings {
   LinearSolverKind linear_solver = LinearSolverKind::automatic;  // auto: CHOLMOD unless its factor is too big (sparse_solver.hpp)
   Real tolerance = 1e-8;  // relative residual force of each increment (NewtonOptions)
   bool check_stability = true;  // end the path at the first unstable equilibrium
+  bool predictor = true;  // start each increment from the secant extrapolation of the last two (displacement_control.hpp)
   Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
 };
 

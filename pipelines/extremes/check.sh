@@ -8,13 +8,9 @@ set -euo pipefail
 case_name=$1 out=$2
 failures=0
 
-# metric FILE LABEL COLUMN: a value of latmpm-post's metrics.csv (header name[unit]).
-metric() {
-  awk -F, -v label="$2" -v name="$3" '
-    /^#/ { next }
-    !h { for (i = 1; i <= NF; i++) { n = $i; sub(/\[.*/, "", n); c[n] = i } h = 1; next }
-    $1 == label { print $c[name] }' "$1"
-}
+source "$(dirname "$0")/../common/post-metric.sh"
+# metric FILE LABEL COLUMN: a value of latmpm-post's metrics.csv or checks.csv.
+metric() { post_metric "$@"; }
 # energy POST_DIR LABEL: "balance strain_at_5pct max_ke_over_se_second_half" of a run, from
 # latmpm-post's checks.csv (docs/post.md "Checks"): the energy balance error |KE + SE - W| / W
 # at the end, the strain where it first passes 5 % ("never"), KE/SE over the second half.

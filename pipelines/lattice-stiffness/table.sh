@@ -1,30 +1,40 @@
 #!/usr/bin/env bash
 # The lattice-stiffness table and plot from the static runs (pipelines/lattice-stiffness.mk).
-# usage: table.sh OUT_DIR PLATE_MM LATTICE...
-#   k   = load / travel of run-<l>-initial (linear elastic, one increment), N/mm
-#   E*  = k H / A: H the height between the plates, A = footprint volume / H (latmpm-lattice), MPa
+# usage: table.sh BIN OUT_DIR LATTICE...
+#   k   = initial stiffness of run-<l>-initial (linear elastic, one increment: the secant), N/mm
+#   E*  = k H / A: H the lattice height between the plates, A its footprint, MPa
+#         (both from latmpm-post's metrics.csv over the initial runs, OUT_DIR/initial/;
+#         definitions in docs/post.md)
 #   P_c = where run-<l>-path's static path ends (load maximum or no convergence), N, with the
 #         travel there; "—" when it did not end within the travel
+# Every number is computed by latmpm-post or the static run (status.toml); this script copies.
 set -euo pipefail
-out=$1 plate=$2
+bin=$1 out=$2
 shift 2
 csv=$out/stiffness.csv md=$out/stiffness.md
+post=$out/initial
+labels=() runs=()
+for l in "$@"; do labels+=(--label "$l=$out/run-$l-initial"); runs+=("$out/run-$l-initial"); done
+"$bin/latmpm-post" "${runs[@]}" "${labels[@]}" -o "$post" --kind compression --load load_driven \
+  --title "Lattice stiffness: the initial increments" > /dev/null
+source "$(dirname "$0")/../common/post-metric.sh"
 echo "lattice,k[N/mm],E_eff[MPa],instability_load[N],instability_travel[mm],end_reason,initial_cpu_s,path_cpu_s" > "$csv.tmp"
 for l in "$@"; do
-  geo=$out/geometry-$l.txt init=$out/run-$l-initial path=$out/run-$l-path
-  # Second data row of the series: the one increment (travel m, load N).
-  k=$(awk -F, 'NR == 3 { printf "%.6g", $4 / ($3 * 1e3) }' "$init/series.csv")
-  read -r zmin zmax < <(sed -n 's/.* z \[\([-0-9.]*\), \([-0-9.]*\)\] mm.*/\1 \2/p' "$geo")
-  fp=$(sed -n 's/.*\/ \([0-9.]*\) mm^3 footprint.*/\1/p' "$geo")
-  e=$(awk -v k="$k" -v z0="$zmin" -v z1="$zmax" -v t="$plate" -v v="$fp" \
-      'BEGIN { h = z1 - z0 - 2 * t; printf "%.4g", k * h * h / v }')  # N/mm · mm / mm² = MPa
+  init=$out/run-$l-initial path=$out/run-$l-path
+  k=$(post_metric "$post/metrics.csv" "$l" initial_stiffness) e=$(post_metric "$post/metrics.csv" "$l" effective_modulus)
+  if [ -z "$e" ]; then
+    echo "table.sh: no effective modulus for $l in $post/summary.md (a point file from before latmpm-lattice" \
+         "recorded footprint_area? remove $out/geometry-$l.h5 and $out/points-$l.h5 and rerun)" >&2
+    exit 2
+  fi
+  e=$(printf '%.4g' "$e")
   # status.toml's reason, as the static run writes it (libs/static_run/static_solve_run.cpp).
   end=$(sed -n 's/^reason = "the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N"$/\1;\2;\3/p' "$path/status.toml" 2>/dev/null || true)
   if [ ! -f "$path/done" ]; then
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
-    travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')
+    travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')  # m -> mm
   else
     reason="none within the travel" travel="" load=""
   fi

@@ -64,6 +64,10 @@ TEST_CASE("A periodic lattice with plates spans whole cells between them", "[geo
   CHECK(parse_quantity(g.parameters.at("layer_height")).value == Approx(a));
   CHECK(parse_quantity(g.parameters.at("lattice_zmax")).value - parse_quantity(g.parameters.at("lattice_zmin")).value ==
         Approx(4 * a));
+  // Both cells put round strut ends on the outermost cell corners: the footprint is the
+  // cells' extent plus a radius on each side.
+  CHECK(parse_quantity(g.parameters.at("footprint_area")).value ==
+        Approx((3 * a + spec.strut_diameter) * (2 * a + spec.strut_diameter)));
   const Eigen::AlignedBox3d struts = solid_bounds(g, true);
   REQUIRE(g.plates.size() == 2);
   CHECK(g.plates[0].min.x() == Approx(struts.min().x() - 1e-3));

@@ -57,6 +57,11 @@ void write_synthetic_run(const std::string& dir, const SyntheticRun& r, const Se
                     {"strut_length", metres(r.strut_length)},
                     {"lattice_zmin", metres(r.lattice_zmin)},
                     {"lattice_zmax", metres(r.lattice_zmax)}};
+    if (r.footprint_area > 0) {
+      char area[64];
+      std::snprintf(area, sizeof area, "%.17g m^2", r.footprint_area);
+      p.parameters["footprint_area"] = area;
+    }
     Hdf5File f(points_file, Hdf5File::Mode::create);
     write_point_set(f, p);
     write_provenance(f, Provenance{"synthetic_run", "test", "write_synthetic_run()", {}, "2024-01-01T00:00:00Z", {}});

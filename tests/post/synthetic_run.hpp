@@ -13,6 +13,7 @@ struct SyntheticRun {
   std::string cell = "tetrahedral"; // /points/parameters/cell ("column" makes a column run)
   double strut_diameter = 1.6e-3, strut_length = 16e-3;  // m
   double lattice_zmin = 3e-3, lattice_zmax = 43e-3;      // m: gauge length 40 mm
+  double footprint_area = 0;                             // m²; 0: not recorded
   double youngs_modulus = 10e6, density = 1050;          // Pa, kg/m³
   int deformable_points = 10;
   double point_volume = 1e-9;                            // m³

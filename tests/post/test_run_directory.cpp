@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -152,6 +153,36 @@ TEST_CASE("The analysis picks the kind from the point file and the load from the
   wrong = {};
   wrong.kind = "tension";
   CHECK_THROWS_WITH(analyse_run(read_run_directory(d.string()), wrong), Catch::StartsWith("--kind"));
+}
+
+TEST_CASE("The effective modulus is the stiffness times the gauge length over the footprint area", "[post]") {
+  // A linear specimen F = k u with k = 100 N/m (ramp), H = 40 mm, A = 2 mm x 5 mm: the block of
+  // that footprint and height with E* = k H / A = 400 Pa is as stiff. Also from one increment
+  // (two rows: the secant), and not at all without a recorded footprint.
+  const fs::path d = scratch("modulus");
+  test::SyntheticRun r;
+  r.footprint_area = 10e-6;
+  const size_t rows = GENERATE(size_t(2), size_t(50));
+  test::write_synthetic_run(d.string(), r, ramp(rows));
+  const RunAnalysis a = analyse_run(read_run_directory(d.string()), {});
+  CHECK(a.run.specimen.footprint_area == Approx(10e-6).epsilon(1e-15));
+  REQUIRE(a.compression.has_value());
+  CHECK(a.compression->stiffness == Approx(100).epsilon(1e-12));
+  CHECK(a.compression->effective_modulus == Approx(100 * 40e-3 / 10e-6).epsilon(1e-12));
+  if (rows == 2) {
+    CHECK(a.compression->fit_from == 0);
+    CHECK(a.compression->fit_to == Approx(1e-4));
+    CHECK(std::isnan(a.compression->peak_load));
+  }
+
+  r.footprint_area = 0;
+  test::write_synthetic_run(d.string(), r, ramp(rows));
+  const RunAnalysis bare = analyse_run(read_run_directory(d.string()), {});
+  REQUIRE(bare.compression.has_value());
+  CHECK(bare.compression->stiffness == Approx(100).epsilon(1e-12));
+  CHECK(std::isnan(bare.compression->effective_modulus));
+  CHECK(std::any_of(bare.notes.begin(), bare.notes.end(),
+                    [](const std::string& n) { return n.find("effective modulus") != std::string::npos; }));
 }
 
 TEST_CASE("Impact runs are recognised by their flyer columns", "[post]") {
