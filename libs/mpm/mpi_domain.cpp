@@ -28,35 +28,42 @@ void check(int status, const char* what) {
 
 // --- Particles as bytes: every field of the registry (particle_fields.hpp), in its order ---
 
-size_t particle_bytes(const Particles& ps) {
-  size_t bytes = 0;
-  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
-    if (!(f.optional && v.empty())) bytes += sizeof(v[0]);
+// Which fields of the registry travel: `present[f]` for the f-th field visited. An optional
+// field is empty on a process that holds no particle, so the mask is reduced over the
+// processes (fields_present), never read from one process's arrays.
+using FieldMask = std::vector<uint8_t>;
+
+size_t particle_bytes(const Particles& ps, const FieldMask& present) {
+  size_t bytes = 0, f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, const auto& v, const auto&) {
+    if (present[f++]) bytes += sizeof(v[0]);
   });
   return bytes;
 }
 
-void pack_particle(const Particles& ps, size_t p, char*& out) {
-  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
-    if (f.optional && v.empty()) return;
+void pack_particle(const Particles& ps, size_t p, char*& out, const FieldMask& present) {
+  size_t f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, const auto& v, const auto&) {
+    if (!present[f++]) return;
     std::memcpy(out, &v[p], sizeof(v[p]));
     out += sizeof(v[p]);
   });
 }
 
-void unpack_particle(Particles& ps, const char*& in) {
-  for_each_particle_field(ps, [&](const ParticleField& f, auto& v, const auto&) {
-    if (f.optional && v.empty()) return;
+void unpack_particle(Particles& ps, const char*& in, const FieldMask& present) {
+  size_t f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, auto& v, const auto&) {
+    if (!present[f++]) return;
     v.emplace_back();
     std::memcpy(static_cast<void*>(&v.back()), in, sizeof(v.back()));  // plain values, Eigen's too
     in += sizeof(v.back());
   });
 }
 
-std::vector<char> packed(const Particles& ps) {
-  std::vector<char> out(ps.size() * particle_bytes(ps));
+std::vector<char> packed(const Particles& ps, const FieldMask& present) {
+  std::vector<char> out(ps.size() * particle_bytes(ps, present));
   char* at = out.data();
-  for (size_t p = 0; p < ps.size(); ++p) pack_particle(ps, p, at);
+  for (size_t p = 0; p < ps.size(); ++p) pack_particle(ps, p, at, present);
   return out;
 }
 
@@ -277,6 +284,17 @@ void MpiDomain::repartition(const Particles& ps, Real inv_h) {
   partition_ = partition_buckets(counts, size_);
 }
 
+FieldMask MpiDomain::fields_present(const Particles& ps) const {
+  FieldMask present;
+  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
+    present.push_back(!(f.optional && v.empty()));
+  });
+  if (size_ > 1)
+    check(MPI_Allreduce(MPI_IN_PLACE, present.data(), int(present.size()), MPI_UINT8_T, MPI_MAX, comm_),
+          "MPI_Allreduce");
+  return present;
+}
+
 void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   if (size_ == 1) return;
   const Real inv_h = 1 / cell_size;
@@ -297,7 +315,8 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   if (largest * size_ > imbalance_threshold * total) repartition(ps, inv_h);
 
   // Each particle to the owner of its bucket.
-  const size_t bytes = particle_bytes(ps);
+  const FieldMask present = fields_present(ps);
+  const size_t bytes = particle_bytes(ps, present);
   std::vector<int> owner(ps.size());
   std::vector<int> send_counts(size_t(size_), 0);
   for (size_t p = 0; p < ps.size(); ++p) {
@@ -315,7 +334,7 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
     keep[p] = owner[p] == rank_;
     if (keep[p]) continue;
     char* at = out.data() + fill[size_t(owner[p])];
-    pack_particle(ps, p, at);
+    pack_particle(ps, p, at, present);
     fill[size_t(owner[p])] += int(bytes);
     ++traffic_.particles_sent;
   }
@@ -324,7 +343,7 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
         "MPI_Alltoallv");
   traffic_.migration_bytes += out.size();
   keep_particles(ps, keep);
-  for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(ps, at);
+  for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(ps, at, present);
 }
 
 void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& buckets) {
@@ -466,26 +485,28 @@ std::vector<T> MpiDomain::gather_to_root(const std::vector<T>& local, std::vecto
 Particles MpiDomain::gather_particles(const Particles& local) const {
   if (!distributed()) return rank_ == 0 ? local : Particles{};
   std::vector<int> sizes;
-  const std::vector<char> in = gather_to_root(packed(local), sizes);
+  const FieldMask present = fields_present(local);
+  const std::vector<char> in = gather_to_root(packed(local, present), sizes);
   Particles all;
   if (rank_ != 0) return all;
   // The same fields as the local set (history columns, optional fields present or not).
   all = local;
   all.resize(0);
-  for (const char* p = in.data(); p < in.data() + in.size();) unpack_particle(all, p);
+  for (const char* p = in.data(); p < in.data() + in.size();) unpack_particle(all, p, present);
   return all;
 }
 
 BucketedParticles MpiDomain::gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
   if (!distributed()) return rank_ == 0 ? BucketedParticles{local, {buckets.buckets(), buckets.runs()}} : BucketedParticles{};
   std::vector<int> byte_sizes, bucket_sizes, run_sizes;
-  const std::vector<char> bytes = gather_to_root(packed(local), byte_sizes);
+  const FieldMask present = fields_present(local);
+  const std::vector<char> bytes = gather_to_root(packed(local, present), byte_sizes);
   const std::vector<int64_t> bucket_table = gather_to_root(bucket_rows(buckets.buckets()), bucket_sizes);
   const std::vector<int64_t> run_table = gather_to_root(run_rows(buckets.runs()), run_sizes);
   BucketedParticles out;
   if (rank_ != 0) return out;
   // Each process's tables index its own particles and runs; merged, they are one process's.
-  const size_t width = particle_bytes(local);
+  const size_t width = particle_bytes(local, present);
   const size_t processes = size_t(size_);
   std::vector<BucketTables> parts(processes);
   std::vector<size_t> counts(processes);
@@ -502,7 +523,7 @@ BucketedParticles MpiDomain::gather_buckets(const Particles& local, const Partic
   out.particles.resize(0);
   for (uint32_t p : merged.order) {
     const char* at = bytes.data() + size_t(p) * width;
-    unpack_particle(out.particles, at);
+    unpack_particle(out.particles, at, present);
   }
   out.tables = std::move(merged.tables);
   return out;

@@ -88,6 +88,9 @@ class MpiDomain {
  private:
   bool distributed() const { return size_ > 1 && distributed_; }
   void repartition(const Particles& particles, Real inv_h);
+  // Which particle fields the run carries (particle_fields.hpp's order), the same on every
+  // process (collective): optional fields are empty where a process holds no particle.
+  std::vector<uint8_t> fields_present(const Particles& particles) const;
   // Every process's `local` values to rank 0, one after the other in rank order; `sizes`
   // receives each process's count there. Collective.
   template <class T>

@@ -92,7 +92,8 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
 }
 
 BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt) {
-  return {s.grid, c.settings.cell_size, dt, c.settings.gravity, &c.reactions, c.penalty_contact ? &c.contact : nullptr};
+  return {s.grid, c.settings.cell_size, dt, c.settings.gravity, &c.reactions,
+          c.penalty_contact ? &c.contact : nullptr, &c.domain};
 }
 
 void update_nodes(SolverState& s, StepContext& c, Real dt) {
@@ -107,11 +108,7 @@ void update_nodes(SolverState& s, StepContext& c, Real dt) {
 
 void constrain_boundaries(SolverState& s, StepContext& c, Real dt) {
   BoundaryPass pass = boundary_pass(s, c, dt);
-  for (auto& b : s.boundaries) {
-    std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
-    // A no-slip rigid body's reaction is a sum over this process's nodes.
-    if (auto* rigid = std::get_if<RigidBoundary>(&b)) rigid->reaction = c.domain.reduce_sum(rigid->reaction);
-  }
+  for (auto& b : s.boundaries) std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
 }
 
 void impose_boundaries(SolverState& s, StepContext& c, int lane) {
