@@ -9,15 +9,7 @@
 # usage: points_crossing_processes.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
 set -euo pipefail
 bin_dir=$1 mpirun=${3:-}
-if [ -z "$mpirun" ]; then
-  echo "skipped: this build has no MPI (cmake -DLATMPM_MPI=ON, or make mpi)"
-  exit 77
-fi
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-cd "$scratch"
-"$bin_dir/latmpm-lattice" --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5 >/dev/null
-"$bin_dir/latmpm-voxelize" c.h5 --cell 0.8mm --ppc 2 -o c-points.h5 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 cat > falling.toml <<'EOF'
 # The column of column-tiny.toml, plates omitted, falling sideways: a uniform acceleration
 # of (8, 4, -12)·10^4 m/s² moves it some (2, 1, -3) mm in 120 steps.
@@ -47,7 +39,6 @@ series_every = 10
 snapshot_every = 60
 record_tag = ""              # the points tagged "record" lie in the omitted plates
 EOF
-mpi() { "$mpirun" -np "$1" --oversubscribe --mca mpi_yield_when_idle 1 "$bin_dir/latmpm-solve" "${@:2}"; }
 "$bin_dir/latmpm-solve" falling.toml --quiet --threads 1 -o one
 mpi 3 falling.toml --quiet --threads 1 -o three
 mpi 2 falling.toml --set run.max_steps=60 --quiet --threads 1 -o resumed

@@ -7,19 +7,9 @@
 # usage: resume_across_process_counts.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
 set -euo pipefail
 bin_dir=$1 source_dir=$2 mpirun=${3:-}
-if [ -z "$mpirun" ]; then
-  echo "skipped: this build has no MPI (cmake -DLATMPM_MPI=ON, or make mpi)"
-  exit 77
-fi
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-cd "$scratch"
-"$bin_dir/latmpm-lattice" --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5 >/dev/null
-"$bin_dir/latmpm-voxelize" c.h5 --cell 0.8mm --ppc 2 -o c-points.h5 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 run=("$source_dir/data/scenes/column-tiny.toml" --set points.0.file=c-points.h5 --set output.snapshot_every=40
      --quiet --threads 1)
-# Oversubscribed on a small machine: yield instead of spinning while waiting.
-mpi() { "$mpirun" -np "$1" --oversubscribe --mca mpi_yield_when_idle 1 "$bin_dir/latmpm-solve" "${@:2}"; }
 
 "$bin_dir/latmpm-solve" "${run[@]}" --set run.max_steps=200 -o whole
 "$bin_dir/latmpm-solve" "${run[@]}" --set run.max_steps=80 -o one-at-80

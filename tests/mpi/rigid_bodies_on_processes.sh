@@ -8,15 +8,7 @@
 # usage: rigid_bodies_on_processes.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
 set -euo pipefail
 bin_dir=$1 source_dir=$2 mpirun=${3:-}
-if [ -z "$mpirun" ]; then
-  echo "skipped: this build has no MPI (cmake -DLATMPM_MPI=ON, or make mpi)"
-  exit 77
-fi
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-cd "$scratch"
-"$bin_dir/latmpm-lattice" --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5 >/dev/null
-"$bin_dir/latmpm-voxelize" c.h5 --cell 0.8mm --ppc 2 -o c-points.h5 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 scene=("$source_dir/data/scenes/column-platen-contact.toml" --set points.0.file=c-points.h5 --set run.max_steps=150
        --set output.snapshot_every=150 --quiet --threads 1)
 flyer='{ motion = "free", shape = "box", mass = "0.05kg", min = ["-5mm", "-5mm", "17.6mm"], max = ["5mm", "5mm", "27.6mm"], velocity = ["0m/s", "0m/s", "-2m/s"] }'
@@ -26,14 +18,13 @@ overrides_flyer=(--set "rigid_bodies.platen=$flyer" --set 'run.end={ time = "1ms
 for v in "${variants[@]}"; do
   declare -n extra="overrides_$v"
   "$bin_dir/latmpm-solve" "${scene[@]}" "${extra[@]}" -o "$v-one"
-  "$mpirun" -np 2 --oversubscribe --mca mpi_yield_when_idle 1 "$bin_dir/latmpm-solve" "${scene[@]}" "${extra[@]}" -o "$v-two"
+  mpi 2 "${scene[@]}" "${extra[@]}" -o "$v-two"
   grep -q "processes: 2 (MPI)" "$v-two/log.txt"
   cmp "$v-one/series.csv" "$v-two/series.csv"
   h5diff "$v-one/snapshots/snap_000150.h5" "$v-two/snapshots/snap_000150.h5" /particles /particles
   echo "$v: 2 processes equal one, bit for bit"
 done
 status=0
-"$mpirun" -np 2 --oversubscribe --mca mpi_yield_when_idle 1 "$bin_dir/latmpm-solve" "${scene[@]}" -o penalty \
-  2> penalty.err || status=$?
+mpi 2 "${scene[@]}" -o penalty 2> penalty.err || status=$?
 [ "$status" = 2 ] && grep -q "rigid_bodies.platen.*contact.*penalty contact does not run on several MPI processes" penalty.err
 echo "penalty contact: refused on 2 processes (exit 2)"
