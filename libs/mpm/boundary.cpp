@@ -51,7 +51,12 @@ Real claim_marker(size_t index) { return -Real(index + 1); }
 }  // namespace
 
 void RigidBoundary::constrain(BoundaryPass& pass) {
-  reaction = couple_rigid_body(pass.grid, pass.cell_size, pass.dt, settings, state, claim_marker(index));
+  // Per block, summed in block order over every process's blocks: the one-process sum.
+  const std::vector<Real> rows = couple_rigid_body(pass.grid, pass.cell_size, pass.dt, settings, state, claim_marker(index));
+  std::vector<uint64_t> keys(pass.grid.block_count());
+  for (size_t b = 0; b < keys.size(); ++b) keys[b] = pass.grid.key(b);
+  const std::vector<Real> sum = pass.domain ? pass.domain->sum_in_order(keys, rows, 3) : sum_rows(rows, 3);
+  reaction = Vec3(sum[0], sum[1], sum[2]);
 }
 
 void RigidBoundary::impose(BoundaryPass& pass, int lane) {

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "mpm/body.hpp"
+#include "mpm/domain.hpp"
 #include "mpm/real.hpp"
 #include "mpm/rigid_body.hpp"
 
@@ -55,6 +56,7 @@ struct BoundaryPass {
   Vec3 gravity;    // m/s²
   const Reactions* node_reactions = nullptr;  // the node update's sums per point body (grid_update.hpp)
   const ContactForces* contact = nullptr;     // the contact stage's forces (rigid_contact.hpp)
+  const Domain* domain = nullptr;             // sums over every process's grid blocks (domain.hpp)
 };
 
 // The energy bookkeeping the boundaries feed after a step (J, W).

@@ -5,7 +5,7 @@
 //   migrate_particles  before a sort: particles that left this process's buckets handed on
 //                      (the sort itself happens on every process at the same step).
 //   share_grid         after the active blocks are set: which nodes this process shares
-//                      with which others, and which blocks' reactions it counts.
+//                      with which others.
 //   exchange_halo      after each colour of a scatter: the shared nodes that this colour's
 //                      buckets added to made whole on every process that holds them, so
 //                      node sums are added in the one-process order (mass, momentum,
@@ -13,6 +13,10 @@
 //   sum_in_order       sums of per-bucket and per-block partial sums (energies, reactions,
 //                      body centres, the record layer) in the one-process order of the
 //                      buckets and blocks, so they too are bit-identical to one process.
+//   gather_buckets     a checkpoint: every process's buckets in the one-process layout, on
+//                      rank 0, so a checkpoint of N processes is the one of one process.
+//   distribute_buckets a restored checkpoint (every process read all of it): each keeps
+//                      its share of the buckets as they are, so it resumes on any count.
 //   reduce_sum/max/min the other global sums and extremes (speeds for the stable time
 //                      step, rigid couplings and contact, carried energies).
 //
@@ -23,6 +27,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mpm/bucket_layout.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/real.hpp"
 
@@ -55,14 +60,13 @@ class SingleProcessDomain {
   void migrate_particles(Particles&, Real) {}
   void share_grid(const SparseGrid&, const ParticleBuckets&) {}
   void exchange_halo(SparseGrid&, int) {}
-  // Blocks whose node sums (reactions) this process counts; nullptr: all of its blocks.
-  const std::vector<uint8_t>* counted_blocks() const { return nullptr; }
   Real reduce_sum(Real local) const { return local; }
   Vec3 reduce_sum(const Vec3& local) const { return local; }
   // Sums of partial sums in their one-process order: `rows` holds `width` values per item
-  // (a bucket, a grid block) of this process, items in ascending `keys`, each key held by
-  // one process; the column sums over every process's items, added in key order
-  // (sum_rows), the same bits as one process.
+  // (a bucket, a grid block) of this process, items in ascending `keys`; the column sums
+  // over every process's items, added in key order (sum_rows), the same bits as one
+  // process. A key several processes hold (a grid block on a partition border, whose
+  // nodes the halo made the same everywhere) counts once.
   std::vector<Real> sum_in_order(const std::vector<uint64_t>&, const std::vector<Real>& rows, size_t width) const {
     return sum_rows(rows, width);
   }
@@ -76,10 +80,20 @@ class SingleProcessDomain {
   Real reduce_max(Real local) const { return local; }
   Real reduce_min(Real local) const { return local; }
   DomainTraffic traffic() const { return {}; }
+  // Returns once every process has called it (one process: at once).
+  void barrier() const {}
   int process_count() const { return 1; }
   int rank() const { return 0; }
   // Every process's particles on rank 0 (empty elsewhere), for the outputs.
   Particles gather_particles(const Particles& local) const { return local; }
+  // Every process's particles, buckets and runs on rank 0 in the one-process layout (empty
+  // elsewhere). Collective.
+  BucketedParticles gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
+    return {local, {buckets.buckets(), buckets.runs()}};
+  }
+  // After every process read the whole state (a checkpoint): keeps this process's buckets
+  // and their particles, in their order.
+  void distribute_buckets(Particles&, BucketTables&) {}
 };
 
 }  // namespace latmpm::mpm

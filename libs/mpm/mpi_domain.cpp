@@ -5,6 +5,7 @@
 #include <cstring>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
 
 #include "core/errors.hpp"
 #include "mpm/domain.hpp"
@@ -27,29 +28,43 @@ void check(int status, const char* what) {
 
 // --- Particles as bytes: every field of the registry (particle_fields.hpp), in its order ---
 
-size_t particle_bytes(const Particles& ps) {
-  size_t bytes = 0;
-  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
-    if (!(f.optional && v.empty())) bytes += sizeof(v[0]);
+// Which fields of the registry travel: `present[f]` for the f-th field visited. An optional
+// field is empty on a process that holds no particle, so the mask is reduced over the
+// processes (fields_present), never read from one process's arrays.
+using FieldMask = std::vector<uint8_t>;
+
+size_t particle_bytes(const Particles& ps, const FieldMask& present) {
+  size_t bytes = 0, f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, const auto& v, const auto&) {
+    if (present[f++]) bytes += sizeof(v[0]);
   });
   return bytes;
 }
 
-void pack_particle(const Particles& ps, size_t p, char*& out) {
-  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
-    if (f.optional && v.empty()) return;
+void pack_particle(const Particles& ps, size_t p, char*& out, const FieldMask& present) {
+  size_t f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, const auto& v, const auto&) {
+    if (!present[f++]) return;
     std::memcpy(out, &v[p], sizeof(v[p]));
     out += sizeof(v[p]);
   });
 }
 
-void unpack_particle(Particles& ps, const char*& in) {
-  for_each_particle_field(ps, [&](const ParticleField& f, auto& v, const auto&) {
-    if (f.optional && v.empty()) return;
+void unpack_particle(Particles& ps, const char*& in, const FieldMask& present) {
+  size_t f = 0;
+  for_each_particle_field(ps, [&](const ParticleField&, auto& v, const auto&) {
+    if (!present[f++]) return;
     v.emplace_back();
     std::memcpy(static_cast<void*>(&v.back()), in, sizeof(v.back()));  // plain values, Eigen's too
     in += sizeof(v.back());
   });
+}
+
+std::vector<char> packed(const Particles& ps, const FieldMask& present) {
+  std::vector<char> out(ps.size() * particle_bytes(ps, present));
+  char* at = out.data();
+  for (size_t p = 0; p < ps.size(); ++p) pack_particle(ps, p, at, present);
+  return out;
 }
 
 // Keeps the particles whose keep[p] is set, in their order.
@@ -145,6 +160,10 @@ Real MpiDomain::reduce_max(Real local) const {
   return out;
 }
 
+void MpiDomain::barrier() const {
+  if (size_ > 1) check(MPI_Barrier(comm_), "MPI_Barrier");
+}
+
 Real MpiDomain::reduce_min(Real local) const {
   if (!distributed()) return local;
   Real out = local;
@@ -191,12 +210,18 @@ std::vector<Real> MpiDomain::sum_in_order(const std::vector<uint64_t>& keys, con
   check(MPI_Allgatherv(rows.data(), n * int(width), MPI_DOUBLE, all_rows.data(), value_sizes.data(),
                        value_displs.data(), MPI_DOUBLE, comm_),
         "MPI_Allgatherv");
+  // Items in key order; of a key several processes hold (a grid block on a partition
+  // border), the lowest rank's item, the one that comes first in rank order.
   std::vector<uint32_t> order(total);
   for (uint32_t i = 0; i < total; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return all_keys[a] < all_keys[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t a, uint32_t b) { return all_keys[a] != all_keys[b] ? all_keys[a] < all_keys[b] : a < b; });
   std::vector<Real> sum(width, Real(0));
-  for (uint32_t i : order)
+  for (size_t n_th = 0; n_th < total; ++n_th) {
+    const uint32_t i = order[n_th];
+    if (n_th > 0 && all_keys[order[n_th - 1]] == all_keys[i]) continue;
     for (size_t c = 0; c < width; ++c) sum[c] += all_rows[i * width + c];
+  }
   return sum;
 }
 
@@ -259,6 +284,17 @@ void MpiDomain::repartition(const Particles& ps, Real inv_h) {
   partition_ = partition_buckets(counts, size_);
 }
 
+FieldMask MpiDomain::fields_present(const Particles& ps) const {
+  FieldMask present;
+  for_each_particle_field(ps, [&](const ParticleField& f, const auto& v, const auto&) {
+    present.push_back(!(f.optional && v.empty()));
+  });
+  if (size_ > 1)
+    check(MPI_Allreduce(MPI_IN_PLACE, present.data(), int(present.size()), MPI_UINT8_T, MPI_MAX, comm_),
+          "MPI_Allreduce");
+  return present;
+}
+
 void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   if (size_ == 1) return;
   const Real inv_h = 1 / cell_size;
@@ -279,7 +315,8 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   if (largest * size_ > imbalance_threshold * total) repartition(ps, inv_h);
 
   // Each particle to the owner of its bucket.
-  const size_t bytes = particle_bytes(ps);
+  const FieldMask present = fields_present(ps);
+  const size_t bytes = particle_bytes(ps, present);
   std::vector<int> owner(ps.size());
   std::vector<int> send_counts(size_t(size_), 0);
   for (size_t p = 0; p < ps.size(); ++p) {
@@ -297,7 +334,7 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
     keep[p] = owner[p] == rank_;
     if (keep[p]) continue;
     char* at = out.data() + fill[size_t(owner[p])];
-    pack_particle(ps, p, at);
+    pack_particle(ps, p, at, present);
     fill[size_t(owner[p])] += int(bytes);
     ++traffic_.particles_sent;
   }
@@ -306,7 +343,7 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
         "MPI_Alltoallv");
   traffic_.migration_bytes += out.size();
   keep_particles(ps, keep);
-  for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(ps, at);
+  for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(ps, at, present);
 }
 
 void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& buckets) {
@@ -320,15 +357,11 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
     const auto first = all.keys.begin() + all.displs[size_t(q)];
     return std::binary_search(first, first + all.sizes[size_t(q)], key);
   };
-  // A block's node sums (reactions) count on the lowest rank that holds it.
-  counted_.assign(size_t(n), 1);
-  for (int b = 0; b < n; ++b)
-    for (int q = 0; q < rank_ && counted_[size_t(b)]; ++q)
-      if (holds(q, mine[size_t(b)])) counted_[size_t(b)] = 0;
 
   // 2. What this process sends after each colour: the nodes of that colour's bucket boxes
   //    in blocks another process holds, bucket by bucket in the colour's order.
   constexpr int bw = SparseGrid::block_width;
+  const Real* first = grid.block_count() ? grid.block(0) : nullptr;  // node offsets count from here
   std::array<std::vector<std::vector<int32_t>>, 8> coords;  // node coordinates, 3 per node
   std::vector<int> others;
   for (int k = 0; k < 8; ++k) {
@@ -347,7 +380,6 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
             for (int q = 0; q < size_; ++q)
               if (q != rank_ && holds(q, key)) others.push_back(q);
             if (others.empty()) continue;
-            const size_t block = size_t(grid.find(bx, by, bz));
             const int c[3] = {bx, by, bz};
             int lo[3], hi[3];
             for (int a = 0; a < 3; ++a)
@@ -355,8 +387,7 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
             for (int i = lo[0]; i <= hi[0]; ++i)
               for (int j = lo[1]; j <= hi[1]; ++j)
                 for (int l = lo[2]; l <= hi[2]; ++l) {
-                  const size_t offset = block * SparseGrid::reals_per_block +
-                                        size_t(SparseGrid::node_offset(i - bw * bx, j - bw * by, l - bw * bz));
+                  const size_t offset = size_t(grid.node(i, j, l) - first);
                   for (int q : others) {
                     send_nodes_[size_t(k)][size_t(q)].push_back(offset);
                     auto& xyz = coords[size_t(k)][size_t(q)];
@@ -391,12 +422,9 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
     const int32_t* at = in.data() + receive_displs[size_t(q)];
     for (int k = 0; k < 8; ++k)
       for (int m = 0; m < receive_counts[size_t(q * 8 + k)] / 3; ++m, at += 3) {
-        const int i = at[0], j = at[1], l = at[2];
-        const int b = grid.find(floor_div(i, bw), floor_div(j, bw), floor_div(l, bw));
-        if (b < 0) throw std::logic_error("halo: a shared node's block is not active here");
-        receive_nodes_[size_t(k)][size_t(q)].push_back(
-            size_t(b) * SparseGrid::reals_per_block +
-            size_t(SparseGrid::node_offset(i - bw * floor_div(i, bw), j - bw * floor_div(j, bw), l - bw * floor_div(l, bw))));
+        const Real* node = grid.node(at[0], at[1], at[2]);
+        if (!node) throw std::logic_error("halo: a shared node's block is not active here");
+        receive_nodes_[size_t(k)][size_t(q)].push_back(size_t(node - first));
       }
   }
 }
@@ -441,25 +469,78 @@ void MpiDomain::exchange_halo(SparseGrid& grid, int colour) {
   traffic_.halo_bytes += send_size * lanes * sizeof(Real);
 }
 
-Particles MpiDomain::gather_particles(const Particles& local) const {
-  if (!distributed()) return rank_ == 0 ? local : Particles{};
-  const size_t bytes = particle_bytes(local);
-  std::vector<char> out(local.size() * bytes);
-  char* at = out.data();
-  for (size_t p = 0; p < local.size(); ++p) pack_particle(local, p, at);
-  int n = int(out.size());
-  std::vector<int> sizes(size_t(size_), 0);
+template <class T>
+std::vector<T> MpiDomain::gather_to_root(const std::vector<T>& local, std::vector<int>& sizes) const {
+  static_assert(std::is_same_v<T, char> || std::is_same_v<T, int64_t>);
+  const MPI_Datatype type = std::is_same_v<T, char> ? MPI_BYTE : MPI_INT64_T;
+  const int n = int(local.size());
+  sizes.assign(size_t(size_), 0);
   check(MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
   const auto displs = displacements(sizes);
-  std::vector<char> in(rank_ == 0 ? size_t(displs.back() + sizes.back()) : 0);
-  check(MPI_Gatherv(out.data(), n, MPI_BYTE, in.data(), sizes.data(), displs.data(), MPI_BYTE, 0, comm_), "MPI_Gatherv");
+  std::vector<T> all(rank_ == 0 ? size_t(displs.back() + sizes.back()) : 0);
+  check(MPI_Gatherv(local.data(), n, type, all.data(), sizes.data(), displs.data(), type, 0, comm_), "MPI_Gatherv");
+  return all;
+}
+
+Particles MpiDomain::gather_particles(const Particles& local) const {
+  if (!distributed()) return rank_ == 0 ? local : Particles{};
+  std::vector<int> sizes;
+  const FieldMask present = fields_present(local);
+  const std::vector<char> in = gather_to_root(packed(local, present), sizes);
   Particles all;
   if (rank_ != 0) return all;
   // The same fields as the local set (history columns, optional fields present or not).
   all = local;
   all.resize(0);
-  for (const char* p = in.data(); p < in.data() + in.size();) unpack_particle(all, p);
+  for (const char* p = in.data(); p < in.data() + in.size();) unpack_particle(all, p, present);
   return all;
+}
+
+BucketedParticles MpiDomain::gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
+  if (!distributed()) return rank_ == 0 ? BucketedParticles{local, {buckets.buckets(), buckets.runs()}} : BucketedParticles{};
+  std::vector<int> byte_sizes, bucket_sizes, run_sizes;
+  const FieldMask present = fields_present(local);
+  const std::vector<char> bytes = gather_to_root(packed(local, present), byte_sizes);
+  const std::vector<int64_t> bucket_table = gather_to_root(bucket_rows(buckets.buckets()), bucket_sizes);
+  const std::vector<int64_t> run_table = gather_to_root(run_rows(buckets.runs()), run_sizes);
+  BucketedParticles out;
+  if (rank_ != 0) return out;
+  // Each process's tables index its own particles and runs; merged, they are one process's.
+  const size_t width = particle_bytes(local, present);
+  const size_t processes = size_t(size_);
+  std::vector<BucketTables> parts(processes);
+  std::vector<size_t> counts(processes);
+  auto bucket_at = bucket_table.begin();
+  auto run_at = run_table.begin();
+  for (size_t q = 0; q < processes; ++q) {
+    parts[q].buckets = buckets_from_rows({bucket_at, bucket_at + bucket_sizes[q]});
+    parts[q].runs = runs_from_rows({run_at, run_at + run_sizes[q]});
+    bucket_at += bucket_sizes[q], run_at += run_sizes[q];
+    counts[q] = size_t(byte_sizes[q]) / width;
+  }
+  MergedLayout merged = merge_bucket_layouts(parts, counts);
+  out.particles = local;  // the same fields as the local set
+  out.particles.resize(0);
+  for (uint32_t p : merged.order) {
+    const char* at = bytes.data() + size_t(p) * width;
+    unpack_particle(out.particles, at, present);
+  }
+  out.tables = std::move(merged.tables);
+  return out;
+}
+
+void MpiDomain::distribute_buckets(Particles& ps, BucketTables& tables) {
+  // Every process holds the whole state; without buckets (a run saved before its first
+  // sort) it stays so until the first sort cuts it.
+  distributed_ = false;
+  if (size_ == 1 || tables.buckets.empty()) return;
+  std::map<uint64_t, uint64_t> counts;
+  for (const Bucket& b : tables.buckets) counts[morton_key(b.coord)] += b.end - b.begin;
+  partition_ = partition_buckets({counts.begin(), counts.end()}, size_);
+  std::vector<uint8_t> keep(tables.buckets.size());
+  for (size_t b = 0; b < keep.size(); ++b) keep[b] = partition_.owner(tables.buckets[b].coord) == rank_;
+  keep_particles(ps, select_buckets(tables, keep, ps.size()));
+  distributed_ = true;
 }
 
 }  // namespace latmpm::mpm

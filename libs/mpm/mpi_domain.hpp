@@ -66,17 +66,19 @@ class MpiDomain {
   void migrate_particles(Particles& particles, Real cell_size);
   void share_grid(const SparseGrid& grid, const ParticleBuckets& buckets);
   void exchange_halo(SparseGrid& grid, int colour);
-  const std::vector<uint8_t>* counted_blocks() const { return distributed() ? &counted_ : nullptr; }
   Real reduce_sum(Real local) const;
   Vec3 reduce_sum(const Vec3& local) const;
   std::vector<Real> sum_in_order(const std::vector<uint64_t>& keys, const std::vector<Real>& rows, size_t width) const;
   std::vector<Real> sum_in_sequence(const std::vector<uint64_t>& keys, const std::vector<uint32_t>& counts,
                                     const std::vector<Real>& rows, size_t width) const;
   Real reduce_max(Real local) const;
+  void barrier() const;
   Real reduce_min(Real local) const;
   int process_count() const { return size_; }
   int rank() const { return rank_; }
   Particles gather_particles(const Particles& local) const;
+  BucketedParticles gather_buckets(const Particles& local, const ParticleBuckets& buckets) const;
+  void distribute_buckets(Particles& particles, BucketTables& tables);
 
   const BucketPartition& partition() const { return partition_; }
   const DomainTraffic& traffic() const { return traffic_; }
@@ -86,6 +88,13 @@ class MpiDomain {
  private:
   bool distributed() const { return size_ > 1 && distributed_; }
   void repartition(const Particles& particles, Real inv_h);
+  // Which particle fields the run carries (particle_fields.hpp's order), the same on every
+  // process (collective): optional fields are empty where a process holds no particle.
+  std::vector<uint8_t> fields_present(const Particles& particles) const;
+  // Every process's `local` values to rank 0, one after the other in rank order; `sizes`
+  // receives each process's count there. Collective.
+  template <class T>
+  std::vector<T> gather_to_root(const std::vector<T>& local, std::vector<int>& sizes) const;
   std::vector<Real> gather_in_rank_order(const Real* local, int count) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -95,7 +104,6 @@ class MpiDomain {
   // Halo lists of the current grid, per colour and other process: offsets (Reals) of the
   // first lane of each node in the grid's storage, in the order both sides agree on.
   std::array<std::vector<std::vector<size_t>>, 8> send_nodes_, receive_nodes_;
-  std::vector<uint8_t> counted_;  // per active block: no lower rank holds it
   std::vector<Real> send_buffer_, receive_buffer_;
   DomainTraffic traffic_;
 };

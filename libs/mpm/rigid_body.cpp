@@ -75,7 +75,7 @@ void for_each_claimed_node(SparseGrid& grid, Real h, const RigidBodySettings& bo
 }
 }  // namespace
 
-Vec3 couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body, const RigidBodyState& state,
+std::vector<Real> couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body, const RigidBodyState& state,
                        Real marker) {
   std::vector<Vec3> block_force(grid.block_count(), Vec3::Zero());
   const Vec3& V = state.velocity;
@@ -89,9 +89,10 @@ Vec3 couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySetting
     }
     block_force[b] += (m / dt) * change;
   });
-  Vec3 out = Vec3::Zero();
-  for (size_t b = 0; b < grid.block_count(); ++b) out += block_force[b];
-  return out;
+  std::vector<Real> rows(3 * grid.block_count());
+  for (size_t b = 0; b < grid.block_count(); ++b)
+    for (int a = 0; a < 3; ++a) rows[3 * b + size_t(a)] = block_force[b][a];
+  return rows;
 }
 
 void impose_rigid_velocity(SparseGrid& grid, Real h, int lane, const RigidBodySettings& body,

@@ -101,8 +101,9 @@ bool rigid_body_contains(const RigidBodySettings& body, const Vec3& displacement
 // (lane < 0), whose support overlaps the body takes its velocity V and is claimed with
 // `marker` (< 0: −(rigid index + 1)); Δv is corrected to match. Called for the bodies in
 // order, a node inside two bodies goes to the first. Returns the reaction
-// Σ m (V − v_new)/dt (N); deterministic (per-block sums added in block order).
-Vec3 couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body,
+// Σ m (V − v_new)/dt (N) per active block, 3 values a block in block order: their sum in
+// that order (Domain::sum_in_order, over every process's blocks) is the body's reaction.
+std::vector<Real> couple_rigid_body(SparseGrid& grid, Real h, Real dt, const RigidBodySettings& body,
                        const RigidBodyState& state, Real marker);
 
 // The same constraint on a velocity field in lanes [lane, lane + 3) without a reaction (MUSL's

@@ -94,7 +94,13 @@ class Simulation {
   // diagnostics and accumulated work, rigid-body state, the carried stable-step inputs —
   // into / from the HDF5 group `group` of an open file. load_state needs a Simulation built
   // from the same scene (same bodies, settings, rigid bodies); throws InputError otherwise.
+  // On several processes (domain.hpp) both are collective: save_state gathers every
+  // process's part into the one-process layout and writes it on rank 0 (file: nullptr on
+  // the others), so the file is the one a single process writes; load_state reads the
+  // whole file on every process, which keeps its share: a checkpoint of N processes
+  // resumes on any number.
   void save_state(Hdf5File& file, const std::string& group) const;
+  void save_state(Hdf5File* file, const std::string& group) const;
   void load_state(const Hdf5File& file, const std::string& group);
 
   // Set-up of the initial state (initial velocities, prestress); call before the first

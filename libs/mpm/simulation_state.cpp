@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
+#include "mpm/bucket_layout.hpp"
 #include "mpm/checkpoint_io.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/simulation.hpp"
@@ -98,32 +99,31 @@ void check_ranges(const std::string& file, const std::string& dataset, const std
 }
 }  // namespace
 
-namespace {
-void check_one_process(const Domain& domain, const std::string& where) {
-  if (domain.process_count() > 1)
-    throw InputError(where, "", "checkpoints of a run on several MPI processes are not written or read yet");
-}
-}  // namespace
+void Simulation::save_state(Hdf5File& f, const std::string& g) const { save_state(&f, g); }
 
-void Simulation::save_state(Hdf5File& f, const std::string& g) const {
-  check_one_process(context_->domain, f.path());
-  CheckpointWriter out(f, g);
+void Simulation::save_state(Hdf5File* f, const std::string& g) const {
+  // Several processes: every process's buckets in the one-process layout, on rank 0
+  // (bucket_layout.hpp); the file is the one a single process writes at this step.
+  const Domain& domain = context_->domain;
+  const bool needs_sort = domain.reduce_max(state_.needs_sort ? 1 : 0) > 0;
+  const bool gathered = domain.process_count() > 1;
+  BucketedParticles whole;
+  if (gathered) whole = domain.gather_buckets(state_.particles, state_.buckets);
+  if (!f) return;
+  const Particles& particles_out = gathered ? whole.particles : state_.particles;
+  CheckpointWriter out(*f, g);
   out.strings("bodies", names_of(bodies_));
   if (!rigid_bodies_.empty()) out.strings("rigid_bodies", names_of(rigid_bodies_));
 
   CheckpointWriter particles = out.sub("particles");
-  for_each_particle_field(state_.particles, [&](const ParticleField& field, const auto& values, const auto&) {
+  for_each_particle_field(particles_out, [&](const ParticleField& field, const auto& values, const auto&) {
     if (!(field.optional && values.empty())) particles.rows(field.name, values);
   });
 
-  std::vector<int64_t> buckets, runs;
-  for (const auto& b : state_.buckets.buckets())
-    buckets.insert(buckets.end(), {b.coord[0], b.coord[1], b.coord[2], b.begin, b.end, b.run_begin, b.run_end});
-  for (const auto& r : state_.buckets.runs()) runs.insert(runs.end(), {r.body, r.begin, r.end});
   CheckpointWriter sorting = out.sub("buckets");
-  sorting.integers("buckets", buckets, 7);
-  sorting.integers("runs", runs, 3);
-  sorting.integer("needs_sort", state_.needs_sort);
+  sorting.integers("buckets", bucket_rows(gathered ? whole.tables.buckets : state_.buckets.buckets()), bucket_row_width);
+  sorting.integers("runs", run_rows(gathered ? whole.tables.runs : state_.buckets.runs()), run_row_width);
+  sorting.integer("needs_sort", needs_sort);
 
   CheckpointWriter solver = out.sub("solver");
   const StepDiagnostics& d = state_.diagnostics;
@@ -141,7 +141,6 @@ void Simulation::save_state(Hdf5File& f, const std::string& g) const {
 }
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {
-  check_one_process(context_->domain, f.path());
   const CheckpointReader in(f, g);
   const size_t n = state_.particles.size();
   if (in.strings("bodies") != names_of(bodies_))
@@ -179,15 +178,7 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
                                   std::numeric_limits<int32_t>::max() / 8);
   check_ranges(f.path(), g + "/buckets/buckets", b, 7, 3, int64_t(n), "particle");
   check_ranges(f.path(), g + "/buckets/buckets", b, 7, 5, int64_t(r.size() / 3), "run");
-  std::vector<Bucket> buckets(b.size() / 7);
-  for (size_t i = 0; i < buckets.size(); ++i) {
-    const int64_t* x = &b[7 * i];
-    buckets[i].coord = {int(x[0]), int(x[1]), int(x[2])};
-    buckets[i].begin = uint32_t(x[3]), buckets[i].end = uint32_t(x[4]);
-    buckets[i].run_begin = uint32_t(x[5]), buckets[i].run_end = uint32_t(x[6]);
-  }
-  std::vector<BodyRun> runs(r.size() / 3);
-  for (size_t i = 0; i < runs.size(); ++i) runs[i] = {int32_t(r[3 * i]), uint32_t(r[3 * i + 1]), uint32_t(r[3 * i + 2])};
+  BucketTables tables{buckets_from_rows(b), runs_from_rows(r)};
   const bool needs_sort = sorting.integer("needs_sort", 0, 1) != 0;
 
   const CheckpointReader solver = in.sub("solver");
@@ -208,8 +199,10 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
     std::visit([&](auto& boundary) { boundary.load(own); }, boundary_slot);
   }
 
+  // Several processes: each keeps its share of the buckets, as they are (no re-sort).
+  context_->domain.distribute_buckets(p, tables);
   state_.particles = std::move(p);
-  state_.buckets.restore(std::move(buckets), std::move(runs));
+  state_.buckets.restore(std::move(tables.buckets), std::move(tables.runs));
   state_.needs_sort = needs_sort;
   if (!state_.needs_sort) compute_boxes_from_positions(state_, *context_);
   state_.carried = std::move(carried);

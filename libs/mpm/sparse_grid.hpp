@@ -64,12 +64,13 @@ class SparseGrid {
   Real* block(size_t b) { return data_.data() + b * reals_per_block; }
   const Real* block(size_t b) const { return data_.data() + b * reals_per_block; }
   // The lanes of node (i, j, k) (grid coordinates), or nullptr when its block is inactive.
-  Real* node(int i, int j, int k) {
+  const Real* node(int i, int j, int k) const {
     const int bi = floor_div(i, block_width), bj = floor_div(j, block_width), bk = floor_div(k, block_width);
     const int b = find(bi, bj, bk);
     if (b < 0) return nullptr;
     return block(size_t(b)) + node_offset(i - block_width * bi, j - block_width * bj, k - block_width * bk);
   }
+  Real* node(int i, int j, int k) { return const_cast<Real*>(static_cast<const SparseGrid&>(*this).node(i, j, k)); }
   // Offset of node (li, lj, lk), 0 ≤ l < block_width, inside a block, in Reals.
   static int node_offset(int li, int lj, int lk) {
     return ((li * block_width + lj) * block_width + lk) * lane::count;

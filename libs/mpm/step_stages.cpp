@@ -93,36 +93,23 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
 }
 
 BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt) {
-  return {s.grid, c.settings.cell_size, dt, c.settings.gravity, &c.reactions, c.penalty_contact ? &c.contact : nullptr};
+  return {s.grid, c.settings.cell_size, dt, c.settings.gravity, &c.reactions,
+          c.penalty_contact ? &c.contact : nullptr, &c.domain};
 }
 
 void update_nodes(SolverState& s, StepContext& c, Real dt) {
   std::vector<Real> rows = update_grid_velocities(s.grid, dt, c.settings.gravity, c.body_info);
-  // Per block, in block order; a block several processes hold counts on one of them.
+  // Per block, in block order (a block several processes hold counts once: sum_in_order).
   const size_t width = 4 * c.body_info.size();
-  std::vector<uint64_t> keys;
-  keys.reserve(s.grid.block_count());
-  const std::vector<uint8_t>* counted = c.domain.counted_blocks();  // null on one process: all count
-  size_t kept = 0;
-  for (size_t b = 0; b < s.grid.block_count(); ++b) {
-    if (counted && !(*counted)[b]) continue;
-    keys.push_back(s.grid.key(b));
-    if (kept != b)  // rows move down only past a block another process counts
-      std::copy_n(rows.begin() + std::ptrdiff_t(b * width), width, rows.begin() + std::ptrdiff_t(kept * width));
-    ++kept;
-  }
-  rows.resize(kept * width);
+  std::vector<uint64_t> keys(s.grid.block_count());
+  for (size_t b = 0; b < keys.size(); ++b) keys[b] = s.grid.key(b);
   c.reactions = reactions_from_sums(c.domain.sum_in_order(keys, rows, width));
   constrain_boundaries(s, c, dt);
 }
 
 void constrain_boundaries(SolverState& s, StepContext& c, Real dt) {
   BoundaryPass pass = boundary_pass(s, c, dt);
-  for (auto& b : s.boundaries) {
-    std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
-    // A no-slip rigid body's reaction is a sum over this process's nodes.
-    if (auto* rigid = std::get_if<RigidBoundary>(&b)) rigid->reaction = c.domain.reduce_sum(rigid->reaction);
-  }
+  for (auto& b : s.boundaries) std::visit([&](auto& boundary) { boundary.constrain(pass); }, b);
 }
 
 void impose_boundaries(SolverState& s, StepContext& c, int lane) {

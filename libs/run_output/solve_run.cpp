@@ -121,7 +121,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const auto names = output.strings("frame_files");
     const auto times = output.rows<double>("frame_times", names.size(), non_negative);
     const auto steps = output.rows<int64_t>("frame_steps", names.size(), {0, double(sim.step_count())});
-    const auto points = output.rows<int64_t>("frame_points", names.size(), {0, double(sim.particles().size())});
+    const double all_points = sim.domain().reduce_sum(double(sim.particles().size()));  // each process holds its share
+    const auto points = output.rows<int64_t>("frame_points", names.size(), {0, all_points});
     // The frames' extra scalars are the run's material history columns, the same in every frame.
     std::vector<std::string> history;
     for (const auto& column : sim.particles().history) history.push_back(column.name);
@@ -147,13 +148,14 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   RunLog log(writer ? run_dir + "/log.txt" : "", options_.resume);
   if (several)
     log.line("processes: " + std::to_string(sim.domain().process_count()) +
-             " (MPI), rank 0 writes; no checkpoints yet on several processes (docs/cluster.md)");
+             " (MPI), rank 0 writes (docs/cluster.md)");
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
              format_number("%.9g", sim.time()) + " s (" + format_number("%.1f", wall_before) + " s of wall time before)");
   const double end = end_time(scene_);
   const Eigen::Vector3d axis = loading_axis(scene_);
-  const size_t particles = sim.particles().size();
+  // Every process's (a resumed run on several processes holds its share already).
+  const size_t particles = size_t(sim.domain().reduce_sum(double(sim.particles().size())));
   log.line(provenance_.tool + " " + provenance_.version);
   log.line("command: " + provenance_.command_line);
   log.line("scene: " + scene_.source + " (resolved copy: scene.toml)");
@@ -191,6 +193,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       if (c >= header.size() || header[c] != columns[c].header())
         throw InputError(run_dir + "/series.csv", columns[c].header(), "the series does not match the scene's columns");
   }
+  sim.domain().barrier();  // every process has read the run directory before rank 0 rewrites it
   std::unique_ptr<SeriesWriter> series_writer;
   std::unique_ptr<SnapshotWriter> snapshot_writer;
   if (writer) {
@@ -222,7 +225,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   // Checkpoints: the solver state and what the outputs need to continue.
   double last_checkpoint = 0;
   auto save_checkpoint = [&](double wall) {
-    if (several) return;  // not yet (docs/cluster.md); said once in the log's "processes:" line
+    if (!writer) {  // another process: its part of the gathered state (collective)
+      sim.save_state(nullptr, "/state");
+      last_checkpoint = wall;
+      return;
+    }
     SnapshotWriter& snapshots = *snapshot_writer;
     OutputFile out(checkpoint_path, checkpoint_path);
     {
@@ -300,8 +307,10 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   sim.add_observer([&](const mpm::Simulation&, const mpm::StepDiagnostics& d) {
     progress.update(d.time, status_text());
     const double wall = seconds_since(start);
+    // Every process decides alike: the checkpoint is collective, the clocks are not.
     if ((scene_.checkpoint.every_steps > 0 && d.step % scene_.checkpoint.every_steps == 0) ||
-        (scene_.checkpoint.every_minutes > 0 && wall - last_checkpoint >= 60 * scene_.checkpoint.every_minutes))
+        (scene_.checkpoint.every_minutes > 0 &&
+         sim.domain().reduce_max(wall - last_checkpoint >= 60 * scene_.checkpoint.every_minutes ? 1 : 0) > 0))
       save_checkpoint(wall);
     if (wall - last_log >= options_.log_interval_s) {
       last_log = wall;
@@ -323,8 +332,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
         result.status = "interrupted";
         result.signal = signal;
         log.line(std::string("stopped by ") + signal_name(result.signal) + " after step " +
-                 std::to_string(sim.step_count()) +
-                 (several ? ": no checkpoint on several processes" : ": checkpoint saved, --resume continues"));
+                 std::to_string(sim.step_count()) + ": checkpoint saved, --resume continues");
         save_checkpoint(seconds_since(start));
         break;
       }

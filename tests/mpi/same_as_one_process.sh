@@ -6,15 +6,7 @@
 # usage: same_as_one_process.sh BIN_DIR SOURCE_DIR N MPIRUN   (MPIRUN empty: MPI not built, skip)
 set -euo pipefail
 bin_dir=$1 source_dir=$2 processes=$3 mpirun=${4:-}
-if [ -z "$mpirun" ]; then
-  echo "skipped: this build has no MPI (cmake -DLATMPM_MPI=ON, or make mpi)"
-  exit 77
-fi
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
-cd "$scratch"
-"$bin_dir/latmpm-lattice" --column --diameter 1.6mm --length 16mm --end-plates 0.8mm -o c.h5 >/dev/null
-"$bin_dir/latmpm-voxelize" c.h5 --cell 0.8mm --ppc 2 -o c-points.h5 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 # 200 steps (the plate travels 0.08 mm), snapshots at steps 0, 100 and 200: the
 # decomposition, the halo exchange, the ordered sums and the gathered snapshots. No point
 # changes process here (the log's migration bytes are 0): migration is not exercised. Short: on a loaded 2-core machine every one of the step's
@@ -22,8 +14,7 @@ cd "$scratch"
 run=("$source_dir/data/scenes/column-tiny.toml" --set points.0.file=c-points.h5 --set run.max_steps=200
      --set output.snapshot_every=100 --quiet --threads 1)
 "$bin_dir/latmpm-solve" "${run[@]}" -o one
-# Oversubscribed on a small machine: yield instead of spinning while waiting.
-"$mpirun" -np "$processes" --oversubscribe --mca mpi_yield_when_idle 1 "$bin_dir/latmpm-solve" "${run[@]}" -o many
+mpi "$processes" "${run[@]}" -o many
 grep -q "processes: $processes (MPI)" many/log.txt
 # Every process held particles: the halo exchange and the ordered sums were exercised.
 shares=$(grep -o "processes: [0-9]* to [0-9]* particles each.*" many/log.txt)
