@@ -151,6 +151,10 @@ void MpiDomain::check_supported(const Settings& settings, const std::string& whe
     throw InputError(where, "grid.shape",
                      "ddmp does not run on several MPI processes yet (its node passes reach a node's neighbours); "
                      "run it on one process");
+  if (size_ > 1 && settings.field_contact.enabled)
+    throw InputError(where, "contact",
+                     "grid contact does not run on several MPI processes yet (its normals read the mass of a "
+                     "node's neighbours, which a process holds only for its own blocks); run it on one process");
 }
 
 Real MpiDomain::reduce_max(Real local) const {

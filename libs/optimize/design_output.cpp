@@ -75,7 +75,9 @@ void write_summary(const std::string& directory, const OptimizeScene& scene, con
   for (const Load& load : scene.load_case.loads) force += load.force;
   const double mirrors = std::pow(2.0, double(symmetry_planes(scene.grid, scene.load_case).size()));
   auto part_stiffness = [&](double compliance) { return mirrors * force.squaredNorm() / (2 * compliance); };
-  const bool one_load = scene.load_case.loads.size() == 1;
+  // C = F u / 2 holds for linear elasticity only (neo-Hookean C is the strain energy plus the
+  // stabilisation's), so the stiffness is written for linear designs only.
+  const bool one_load = scene.load_case.loads.size() == 1 && scene.material.model == mpm::MaterialKind::linear_elastic;
   std::ostringstream s;
   s << comments(provenance_lines);
   const Index3 c = scene.grid.cells;

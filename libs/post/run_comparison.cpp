@@ -30,6 +30,7 @@ void window_load_error(const RunAnalysis& reference, const RunAnalysis& run, dou
   const auto& d = reference.history.displacement;
   if (!reference.has_travel || !run.has_travel) return;
   const double end = d.back();
+  if (!(end > 0)) return;
   if (!(window > 0)) window = end / 8;
   std::vector<double> ref_means, run_means, stations;
   for (long k = 1; k <= long(end / window + 1e-9); ++k) {
@@ -38,7 +39,10 @@ void window_load_error(const RunAnalysis& reference, const RunAnalysis& run, dou
     run_means.push_back(window_mean(run.history, stations.back(), window / 2));
   }
   if (stations.empty()) return;
-  const double highest = *std::max_element(ref_means.begin(), ref_means.end());
+  double highest = 0;  // over the stations whose window holds reference rows (others are NaN)
+  for (double m : ref_means)
+    if (std::isfinite(m)) highest = std::max(highest, m);
+  if (!(highest > 0)) return;
   for (size_t k = 0; k < stations.size(); ++k) {
     const double error = std::abs(run_means[k] - ref_means[k]) / highest;
     if (std::isfinite(error) && (std::isnan(c.window_load_error) || error > c.window_load_error))

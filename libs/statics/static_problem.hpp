@@ -72,8 +72,8 @@ class StaticProblem {
   BandMatrix matrix_;
   Real stabilisation_ = 0;
   std::vector<Real> stabilisation_blocks_;  // scalar Hessian of E_s per node pair (empty: none)
-  std::vector<Mat9> point_tangent_;
-  PhaseTime assembly_time_;  // V_p ∂P/∂F of the last assembly (non-quadratic energies)
+  std::vector<Mat9> point_tangent_;  // V_p ∂P/∂F of the last assembly (non-quadratic energies)
+  PhaseTime assembly_time_;
 };
 
 }  // namespace latmpm::statics

@@ -41,6 +41,9 @@ for shape in linear ugimp cpgimp bspline2 bspline3 ddmp; do
     ee=$(post_metric "$post/checks.csv" "cfl$cfl" energy_error_over_work)
     lf=$(post_metric "$post/checks.csv" "cfl$cfl" final_load)
     change=$(post_comparison "$post/comparison.csv" cfl0.3 "cfl$cfl" final_error)
-    printf "%s,%s,%s,%s,%.2f,%.4f,%.4g,%+.4f\n" "$shape" "$cfl" "$status" "$steps" "$cpu" "${ee:-0}" "$lf" "${change:-0}"
+    # A failed run has no energy error or change: leave the cell empty rather than print 0.
+    [ -n "$ee" ] && ee=$(printf "%.4f" "$ee")
+    [ -n "$change" ] && change=$(printf "%+.4f" "$change")
+    printf "%s,%s,%s,%s,%.2f,%s,%.4g,%s\n" "$shape" "$cfl" "$status" "$steps" "$cpu" "$ee" "$lf" "$change"
   done
 done

@@ -26,5 +26,6 @@ for v in "${variants[@]}"; do
 done
 status=0
 mpi 2 "${scene[@]}" -o penalty 2> penalty.err || status=$?
-[ "$status" = 2 ] && grep -q "rigid_bodies.platen.*contact.*penalty contact does not run on several MPI processes" penalty.err
+[ "$status" = 2 ] || { echo "penalty contact on 2 processes: exit $status, expected 2" >&2; exit 1; }
+grep -q "rigid_bodies.platen.*contact.*penalty contact does not run on several MPI processes" penalty.err
 echo "penalty contact: refused on 2 processes (exit 2)"

@@ -159,7 +159,7 @@ TEST_CASE("The FLIP/PIC blend's dissipation is the kinetic energy a pure FLIP st
     Particles& ps = sim.mutable_particles();
     for (size_t p = 0; p < ps.size(); ++p) {  // a rough field, by point id: grid-scale noise PIC removes
       const Real k = Real(ps.id[p]);
-      ps.velocity[p] = Vec3(std::sin(1.3 * k), std::cos(2.1 * k), std::sin(0.7 * k + 1));
+      ps.velocity[p] = Vec3(std::sin(1.3 * k), std::cos(2.1 * k), std::sin(0.7 * k + 1)).cast<ParticleReal>();
     }
     return sim.step();
   };

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mpm/material.hpp"
+#include "statics/displacement_control.hpp"
 #include "statics/static_problem.hpp"
 
 namespace latmpm::statics::test {
@@ -43,6 +44,18 @@ inline StaticProblem make_problem(const PointBlock& b, Real h, mpm::ShapeFunctio
                                   const mpm::MaterialParameters& m) {
   return StaticProblem(build_narrow_band(b.position, b.half_size, h, shape), b.volume,
                        std::vector<uint16_t>(b.position.size(), 0), {ElasticEnergy::from(m)});
+}
+
+// Clamped platens on a block standing on z = 0: the nodes at grid layer k <= 0 are held, those
+// at k >= top_layer move with the platen (travel and increments are the caller's).
+inline PlatenLoading clamped_platens(const StaticProblem& problem, int top_layer) {
+  PlatenLoading loading;
+  for (size_t n = 0; n < problem.band().node_count(); ++n) {
+    const int k = problem.band().node[n][2];
+    if (k <= 0) loading.support_nodes.push_back(n);
+    if (k >= top_layer) loading.platen_nodes.push_back(n);
+  }
+  return loading;
 }
 
 }  // namespace latmpm::statics::test

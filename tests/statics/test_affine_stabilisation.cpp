@@ -110,12 +110,7 @@ TEST_CASE("With the stabilisation a two-cell-thick column's static path ends at 
     StaticProblem problem = test::make_problem(block, h, mpm::ShapeFunctionKind::bspline2,
                                                test::material(mpm::MaterialKind::neo_hookean, E, nu));
     problem.set_stabilisation(beta);
-    PlatenLoading loading;
-    for (size_t n = 0; n < problem.band().node_count(); ++n) {
-      const int k = problem.band().node[n][2];
-      if (k <= 0) loading.support_nodes.push_back(n);
-      if (k >= 40) loading.platen_nodes.push_back(n);
-    }
+    PlatenLoading loading = test::clamped_platens(problem, 40);
     loading.travel = 1.25 * euler_travel;
     loading.increments = 5;
     loading.bisections = 4;

@@ -16,12 +16,7 @@ TEST_CASE("A clamped column's static path ends at the Euler load", "[statics]") 
   const test::PointBlock block = test::point_block(Vec3::Zero(), Vec3(side, side, length), h, 2);
   StaticProblem problem = test::make_problem(block, h, mpm::ShapeFunctionKind::bspline2,
                                              test::material(mpm::MaterialKind::neo_hookean, E, nu));
-  PlatenLoading loading;
-  for (size_t n = 0; n < problem.band().node_count(); ++n) {
-    const int k = problem.band().node[n][2];
-    if (k <= 0) loading.support_nodes.push_back(n);
-    if (k >= 60) loading.platen_nodes.push_back(n);
-  }
+  PlatenLoading loading = test::clamped_platens(problem, 60);
   const Real euler = 4 * M_PI * M_PI * E * (side * side * side * side / 12) / (length * length);
   const Real euler_travel = euler / (E * side * side) * length;
   loading.travel = 1.25 * euler_travel;

@@ -15,12 +15,7 @@ TEST_CASE("The secant predictor saves Newton steps without changing the static p
   const test::PointBlock block = test::point_block(Vec3::Zero(), Vec3::Constant(side), h, 2);
   StaticProblem problem = test::make_problem(block, h, mpm::ShapeFunctionKind::bspline2,
                                              test::material(mpm::MaterialKind::neo_hookean, 1e7, 0.3));
-  PlatenLoading loading;
-  for (size_t n = 0; n < problem.band().node_count(); ++n) {
-    const int k = problem.band().node[n][2];
-    if (k <= 0) loading.support_nodes.push_back(n);
-    if (k >= 4) loading.platen_nodes.push_back(n);
-  }
+  PlatenLoading loading = test::clamped_platens(problem, 4);
   loading.travel = 0.4 * side;
   loading.increments = 8;
   loading.check_stability = false;
