@@ -11,6 +11,9 @@ namespace latmpm::mpm {
 
 namespace {
 constexpr const char* version_attribute = "format_version";
+// The build's particle precision (real.hpp): a mixed build's float fields resumed by a double
+// build (or the reverse) would not continue the run bit for bit. Missing: written as double.
+constexpr const char* precision_attribute = "precision";
 
 template <class T>
 std::vector<double> flatten(const std::vector<T>& v) {
@@ -42,6 +45,7 @@ std::vector<T> unflatten(const std::vector<double>& d) {
 CheckpointWriter::CheckpointWriter(Hdf5File& file, std::string group) : file_(file), group_(std::move(group)) {
   file_.create_group(group_);
   file_.set_attribute(group_, version_attribute, checkpoint_format_version);
+  file_.set_attribute(group_, precision_attribute, precision_name);
 }
 
 CheckpointWriter::CheckpointWriter(Hdf5File& file, std::string group, bool) : file_(file), group_(std::move(group)) {}
@@ -85,6 +89,14 @@ CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group) : fi
     throw InputError(file_.path(), group_,
                      "has checkpoint format " + std::to_string(version) + ", this latmpm reads format " +
                          std::to_string(checkpoint_format_version));
+  const std::string precision =
+      file_.has_attribute(group_, precision_attribute) ? file_.string_attribute(group_, precision_attribute) : "double";
+  if (precision != precision_name)
+    throw InputError(file_.path(), group_,
+                     "was written by the " + precision + "-precision build and this latmpm is the " +
+                         std::string(precision_name) +
+                         "-precision one: resume with the build that wrote it (status.toml names it), or rerun "
+                         "from the start");
 }
 
 CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group, bool)

@@ -170,3 +170,25 @@ TEST_CASE("A checkpoint of another format version is refused with its version na
   CHECK_THROWS_WITH(CheckpointReader(file, "/state"), Catch::Contains("format " + std::to_string(checkpoint_format_version + 1)));
   std::filesystem::remove(path);
 }
+
+TEST_CASE("A checkpoint written by the other precision build is refused with both precisions named", "[mpm][fields][checkpoint]") {
+  const std::string path = scratch_file("latmpm-precision");
+  {
+    Hdf5File file(path, Hdf5File::Mode::create);
+    CheckpointWriter writer(file, "/state");  // stamps this build's format and precision
+  }
+  {
+    Hdf5File file(path, Hdf5File::Mode::read);
+    CHECK_NOTHROW(CheckpointReader(file, "/state"));
+  }
+  const std::string other = std::string(precision_name) == "double" ? "mixed" : "double";
+  {
+    Hdf5File file(path, Hdf5File::Mode::read_write);
+    file.set_attribute("/state", "precision", other);
+  }
+  Hdf5File file(path, Hdf5File::Mode::read);
+  CHECK_THROWS_AS(CheckpointReader(file, "/state"), InputError);
+  CHECK_THROWS_WITH(CheckpointReader(file, "/state"), Catch::Contains(other + "-precision build") &&
+                                                          Catch::Contains(std::string(precision_name) + "-precision one"));
+  std::filesystem::remove(path);
+}
