@@ -121,14 +121,18 @@ constexpr int bw = SparseGrid::block_width;
 
 // Mass of the fields in `mask` at node (i, j, k); 0 on an inactive block.
 Real field_mass(const SparseGrid& grid, const ContactFields& f, uint32_t mask, int i, int j, int k) {
-  const int bi = floor_div(i, bw), bj = floor_div(j, bw), bk = floor_div(k, bw);
-  const int b = grid.find(bi, bj, bk);
-  if (b < 0) return 0;
-  const size_t at = size_t(b) * SparseGrid::reals_per_block +
-                    size_t(SparseGrid::node_offset(i - bw * bi, j - bw * bj, k - bw * bk)) + lane::mass;
+  const std::ptrdiff_t node = grid.node_index(i, j, k);
+  if (node < 0) return 0;
+  const size_t at = size_t(node) + lane::mass;
   Real m = 0;
   for (uint32_t rest = mask; rest; rest &= rest - 1) m += f.lanes[size_t(lowest_field(rest))][at];
   return m;
+}
+
+// A field's free momentum at a node, p + dt f (its momentum and force lanes).
+Vec3 free_momentum(const Real* lanes, Real dt) {
+  return Vec3(lanes[lane::momentum], lanes[lane::momentum + 1], lanes[lane::momentum + 2]) +
+         dt * Vec3(lanes[lane::force], lanes[lane::force + 1], lanes[lane::force + 2]);
 }
 
 // ∇ of the nodal mass of the fields in `mask` at node (i, j, k), central differences.
@@ -199,11 +203,10 @@ void apply_field_contact(SparseGrid& grid, ContactFields& f, Real dt, const Vec3
       const Real m = node[lane::mass];
       Vec3 q_all = Vec3::Zero();
       for (uint32_t rest = present; rest; rest &= rest - 1) {
-        const Real* lanes = f.lanes[size_t(lowest_field(rest))].data() + at;
-        q_all += Vec3(lanes[1], lanes[2], lanes[3]) + dt * Vec3(lanes[4], lanes[5], lanes[6]);
+        q_all += free_momentum(f.lanes[size_t(lowest_field(rest))].data() + at, dt);
       }
       const Vec3 v_cm_free = q_all / m + dt * gravity;
-      const Vec3 v_cm(node[1], node[2], node[3]);
+      const Vec3 v_cm(node[lane::momentum], node[lane::momentum + 1], node[lane::momentum + 2]);
       const int i = bw * coord[0] + n / (bw * bw), j = bw * coord[1] + (n / bw) % bw, k = bw * coord[2] + n % bw;
       // The volume check: the fields touch only where they fill the node; else each moves freely.
       Real volume = 0;
@@ -221,7 +224,7 @@ void apply_field_contact(SparseGrid& grid, ContactFields& f, Real dt, const Vec3
         for (uint32_t rest = cluster; rest; rest &= rest - 1) {
           const Real* lanes = f.lanes[size_t(lowest_field(rest))].data() + at;
           m_k += lanes[lane::mass];
-          q += Vec3(lanes[1], lanes[2], lanes[3]) + dt * Vec3(lanes[4], lanes[5], lanes[6]);
+          q += free_momentum(lanes, dt);
         }
         const Vec3 delta_free = q / m_k + dt * gravity - v_cm_free;
         Vec3 delta = delta_free;
@@ -256,7 +259,7 @@ void apply_field_contact(SparseGrid& grid, ContactFields& f, Real dt, const Vec3
         dissipated[b] += Real(0.5) * m_k * ((v_cm + delta_free).squaredNorm() - v.squaredNorm());
         for (uint32_t rest = cluster; rest; rest &= rest - 1) {
           Real* lanes = f.lanes[size_t(lowest_field(rest))].data() + at;
-          const Vec3 v_old = Vec3(lanes[1], lanes[2], lanes[3]) / lanes[lane::mass];
+          const Vec3 v_old = Vec3(lanes[lane::momentum], lanes[lane::momentum + 1], lanes[lane::momentum + 2]) / lanes[lane::mass];
           for (int a = 0; a < 3; ++a) lanes[lane::momentum + a] = v[a], lanes[lane::force + a] = v[a] - v_old[a];
         }
       }

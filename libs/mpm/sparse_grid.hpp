@@ -14,6 +14,7 @@
 #include <tbb/cache_aligned_allocator.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -63,12 +64,19 @@ class SparseGrid {
   Coord coord(size_t b) const { return key_to_coord(keys_[b]); }
   Real* block(size_t b) { return data_.data() + b * reals_per_block; }
   const Real* block(size_t b) const { return data_.data() + b * reals_per_block; }
-  // The lanes of node (i, j, k) (grid coordinates), or nullptr when its block is inactive.
-  const Real* node(int i, int j, int k) const {
+  // Where node (i, j, k)'s lanes start in the block storage (in Reals; the same index in any
+  // array laid out like the grid's, e.g. a contact field's copy), or -1 when its block is inactive.
+  std::ptrdiff_t node_index(int i, int j, int k) const {
     const int bi = floor_div(i, block_width), bj = floor_div(j, block_width), bk = floor_div(k, block_width);
     const int b = find(bi, bj, bk);
-    if (b < 0) return nullptr;
-    return block(size_t(b)) + node_offset(i - block_width * bi, j - block_width * bj, k - block_width * bk);
+    if (b < 0) return -1;
+    return std::ptrdiff_t(b) * reals_per_block +
+           node_offset(i - block_width * bi, j - block_width * bj, k - block_width * bk);
+  }
+  // The lanes of node (i, j, k) (grid coordinates), or nullptr when its block is inactive.
+  const Real* node(int i, int j, int k) const {
+    const std::ptrdiff_t at = node_index(i, j, k);
+    return at < 0 ? nullptr : data_.data() + at;
   }
   Real* node(int i, int j, int k) { return const_cast<Real*>(static_cast<const SparseGrid&>(*this).node(i, j, k)); }
   // Offset of node (li, lj, lk), 0 ≤ l < block_width, inside a block, in Reals.

@@ -46,6 +46,13 @@ inline StaticProblem make_problem(const PointBlock& b, Real h, mpm::ShapeFunctio
                        std::vector<uint16_t>(b.position.size(), 0), {ElasticEnergy::from(m)});
 }
 
+// A neo-Hookean cube of 4 cells (h = 1 mm, E = 10 MPa, ν = 0.3) on quadratic B-splines, 2
+// points per cell per direction: the block two statics tests compress between clamped platens.
+inline StaticProblem neo_hookean_cube(Real h) {
+  const PointBlock block = point_block(Vec3::Zero(), Vec3::Constant(4 * h), h, 2);
+  return make_problem(block, h, mpm::ShapeFunctionKind::bspline2, material(mpm::MaterialKind::neo_hookean, 1e7, 0.3));
+}
+
 // Clamped platens on a block standing on z = 0: the nodes at grid layer k <= 0 are held, those
 // at k >= top_layer move with the platen (travel and increments are the caller's).
 inline PlatenLoading clamped_platens(const StaticProblem& problem, int top_layer) {

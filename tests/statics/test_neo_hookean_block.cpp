@@ -13,9 +13,7 @@ using namespace latmpm::statics;
 
 TEST_CASE("A neo-Hookean block compressed to 50 % never inverts and converges quadratically", "[statics]") {
   const Real h = 1e-3, side = 4 * h;
-  const test::PointBlock block = test::point_block(Vec3::Zero(), Vec3::Constant(side), h, 2);
-  StaticProblem problem = test::make_problem(block, h, mpm::ShapeFunctionKind::bspline2,
-                                             test::material(mpm::MaterialKind::neo_hookean, 1e7, 0.3));
+  StaticProblem problem = test::neo_hookean_cube(h);
   const int increments = 10;
   Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
   SparseSolver solver(LinearSolverKind::cholmod);

@@ -12,9 +12,7 @@ using namespace latmpm::statics;
 
 TEST_CASE("The secant predictor saves Newton steps without changing the static path", "[statics]") {
   const Real h = 1e-3, side = 4 * h;
-  const test::PointBlock block = test::point_block(Vec3::Zero(), Vec3::Constant(side), h, 2);
-  StaticProblem problem = test::make_problem(block, h, mpm::ShapeFunctionKind::bspline2,
-                                             test::material(mpm::MaterialKind::neo_hookean, 1e7, 0.3));
+  StaticProblem problem = test::neo_hookean_cube(h);
   PlatenLoading loading = test::clamped_platens(problem, 4);
   loading.travel = 0.4 * side;
   loading.increments = 8;
