@@ -3,9 +3,9 @@
 # processes and requires the same series.csv byte for byte and the same particles in every
 # snapshot (positions in double precision): the MPI domain keeps the one-process sums'
 # order (docs/cluster.md), so nothing may differ, not even in the last bit.
-# usage: same_as_one_process.sh BIN_DIR SOURCE_DIR N MPIRUN   (MPIRUN empty: MPI not built, skip)
+# usage: same_as_one_process.sh BIN_DIR SOURCE_DIR N MPI_SOLVE MPIRUN   (empty: no MPI, skip)
 set -euo pipefail
-bin_dir=$1 source_dir=$2 processes=$3 mpirun=${4:-}
+bin_dir=$1 source_dir=$2 processes=$3 mpi_solve=${4:-} mpirun=${5:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 # 200 steps (the plate travels 0.08 mm), snapshots at steps 0, 100 and 200: the
 # decomposition, the halo exchange, the ordered sums and the gathered snapshots. No point
