@@ -26,3 +26,12 @@ for f in one/snapshots/snap_*.h5; do
   h5diff "$f" "many/snapshots/$(basename "$f")" /particles /particles
 done
 echo "series and snapshots of $processes processes equal one process's, bit for bit"
+# A file rank 0 cannot write (here the snapshot folder, a plain file) while the others wait
+# in a collective: every process stops with exit 2 and the file named, none is left waiting
+# (MpiSession: MPI_Abort with the status; a hang ends in mpi's timeout, exit 124).
+mkdir blocked && touch blocked/snapshots
+status=0
+mpi "$processes" "${run[@]}" -o blocked 2> blocked.err || status=$?
+[ "$status" = 2 ] || { echo "rank 0 unable to write: exit $status, expected 2" >&2; cat blocked.err >&2; exit 1; }
+grep -q "blocked/snapshots: cannot create the snapshot directory" blocked.err
+echo "rank 0 unable to write its snapshots: all $processes processes stopped, exit 2"
