@@ -6,7 +6,7 @@
 #   QUICK=1: cell 0.4 mm (spacing 0.2 mm), cell study over 0.3, 0.4, 0.64 mm.
 #   The runs are the rows of pipelines/column-buckling/cases-{paper,quick}.txt and
 #   cell-study-{paper,quick}.txt; DDMP rows run when the solver lists the shape `ddmp`
-#   (latmpm-solve --list shapes) and DDMP=1 (the default without QUICK). CASES="t2.4-a0 h0.3"
+#   (latmpm-solve --list shapes) unless DDMP=0 (they run by default, QUICK=1 included). CASES="t2.4-a0 h0.3"
 #   makes only the named cases (and the summaries over them).
 # Results in results/column-buckling/{paper,quick}/: ddmp-vs-ugimp/ (one plot of DDMP against
 # uGIMP against the Euler load, t = 1.6 mm, a = 0.02 L: plots/load_displacement.png, and
