@@ -6,9 +6,11 @@
 #   QUICK=1: cell 0.4 mm (spacing 0.2 mm), cell study over 0.3, 0.4, 0.64 mm.
 #   The runs are the rows of pipelines/column-buckling/cases-{paper,quick}.txt and
 #   cell-study-{paper,quick}.txt; DDMP rows run when the solver lists the shape `ddmp`
-#   (latmpm-solve --list shapes) and DDMP=1 (the default without QUICK). CASES="t2.4-a0 h0.3"
+#   (latmpm-solve --list shapes) unless DDMP=0 (they run by default, QUICK=1 included). CASES="t2.4-a0 h0.3"
 #   makes only the named cases (and the summaries over them).
-# Results in results/column-buckling/{paper,quick}/: summary.md (latmpm-post's column metrics:
+# Results in results/column-buckling/{paper,quick}/: ddmp-vs-ugimp/ (one plot of DDMP against
+# uGIMP against the Euler load, t = 1.6 mm, a = 0.02 L: plots/load_displacement.png, and
+# comparison.csv: DDMP's errors against uGIMP); summary.md (latmpm-post's column metrics:
 # peak and post-buckling load against the Euler load, K = 0.5; plots; the notes and the cost
 # of each run from its status.toml), metrics.csv, runs.csv, plots/, curves/,
 # load-displacement-<case>.csv, run-<case>/ (the solver's run directory); cell-study/ the
@@ -35,6 +37,8 @@ $(call pipeline_table,$(CB_STUDY),$(CB_SRC)/cell-study-$(CB_MODE).txt,$(CB_STUDY
 CB_SELECTED       := $(call pipeline_selected,$(CB_ROWS))
 CB_STUDY_SELECTED := $(call pipeline_selected,$(CB_STUDY_ROWS))
 $(call pipeline_check_cases,column-buckling,$(CB_ROWS) $(CB_STUDY_ROWS))
+# Both cases of the DDMP-against-uGIMP plot selected (below).
+CB_HEADLINE := $(and $(filter t1.6-a0.02L,$(call pipeline_case_names,$(CB_SELECTED))),$(filter t1.6-a0.02L-ddmp,$(call pipeline_case_names,$(CB_SELECTED))))
 
 .PHONY: column-buckling column-buckling-results
 column-buckling:
@@ -42,7 +46,8 @@ column-buckling:
 	$(MAKE) column-buckling-results
 
 column-buckling-results: $(if $(CB_SELECTED),$(CB_OUT)/summary.md) $(if $(CB_STUDY_SELECTED),$(CB_STUDY)/summary.md) \
-    $(foreach r,$(CB_SELECTED),$(CB_OUT)/load-displacement-$(call pipeline_field,$r,1).csv)
+    $(foreach r,$(CB_SELECTED),$(CB_OUT)/load-displacement-$(call pipeline_field,$r,1).csv) \
+    $(if $(CB_HEADLINE),$(CB_OUT)/ddmp-vs-ugimp/summary.md)
 	@echo "column-buckling: results in $(CB_OUT)/summary.md and $(CB_STUDY)/summary.md"
 
 # Geometry: the column with end plates as thick as two cells (the base and the driven plate).
@@ -67,6 +72,11 @@ $(CB_OUT)/load-displacement-%.csv: $(CB_OUT)/run-%/done $(CB_SRC)/extract.sh
 # latmpm-post's column metrics: peak and post-buckling load against the Euler load
 # pi^2 E I / (K L)^2, K = 0.5 (clamped-clamped: notes.md says why).
 $(eval $(call pipeline_post,$(CB_OUT),$(call pipeline_label_runs,$(CB_OUT),$(CB_SELECTED)),--kind column,Buckling column (paper A Sec. 4),$(CB_SRC)/notes.md))
+
+# One plot of DDMP against uGIMP against Euler (issue 15): t = 1.6 mm, a = 0.02 L, 100 mm/s,
+# both shapes in one latmpm-post call (plots/load_displacement.png, the Euler load dash-dotted),
+# when both cases are selected.
+$(eval $(call pipeline_post,$(CB_OUT)/ddmp-vs-ugimp,uGIMP=$(CB_OUT)/run-t1.6-a0.02L DDMP=$(CB_OUT)/run-t1.6-a0.02L-ddmp,--kind column --reference uGIMP,Column t = 1.6 mm a = 0.02 L: DDMP against uGIMP against Euler,$(CB_SRC)/notes.md))
 
 # Cell-size study: t = 2.4 mm, a = 0.02 L, end plates of two cells, 2 points per cell per
 # direction at every cell size h (the point file points-h<h>.h5).

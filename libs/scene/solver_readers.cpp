@@ -20,6 +20,9 @@ void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReade
   s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", s.ddmp_alpha_exponent);
   if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
   s.ddmp_on_grid = grid.boolean("ddmp_on_grid", s.ddmp_on_grid);
+  s.ddmp_small_mass_fraction = grid.number("ddmp_small_mass_fraction", s.ddmp_small_mass_fraction);
+  if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
+    grid.fail("ddmp_small_mass_fraction", "must lie in [0, 1)");
 
   if (time.has("dt") && time.has("cfl"))
     time.fail("dt", "give either dt (a fixed step) or cfl (a step from the wave speed), not both");

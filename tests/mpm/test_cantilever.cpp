@@ -99,7 +99,8 @@ TEST_CASE("DDMP's cantilever deflects within twice uGIMP's error of beam theory 
   CHECK(std::abs(ddmp.error()) <= 2 * std::abs(ugimp.error()));
 }
 
-// The convergence table of docs/solver.md (hidden: about a minute).
+// The convergence table and plot of docs/solver.md (hidden: about a minute of CPU;
+// bench/mpm/cantilever_study.sh runs it and plots it).
 TEST_CASE("Cantilever tip deflection against cell size", "[.][cantilever-study]") {
   for (int across : {2, 4, 8})
     for (auto shape : {ShapeFunctionKind::ugimp, ShapeFunctionKind::ddmp, ShapeFunctionKind::linear}) {

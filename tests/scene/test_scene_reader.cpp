@@ -182,6 +182,7 @@ TEST_CASE("Command-line overrides reach any field, the value read as TOML or els
   CHECK(s.end.value == Approx(3e-3));
   CHECK(s.snapshot_every == 5);
   CHECK_THAT(s.resolved_toml, Catch::Contains("0.2mm"));
+  CHECK(parse(base_scene, {"grid.ddmp_small_mass_fraction=0.1"}).settings.ddmp_small_mass_fraction == 0.1);
 
   // Arrays are indexed by number, as in points.0.file; a relative path typed on the command
   // line is relative to the current directory, not to the scene's.
@@ -201,6 +202,7 @@ TEST_CASE("Errors in overridden values name the --set option", "[scene]") {
       {"bodies.column.material.nu=0.7", "bodies.column.material.nu", "(-1, 0.5)"},
       {"points.3.file=x.h5", "points.3.file", "past the end"},
       {"grid.cell.x=1", "grid.cell.x", "not a table"},
+      {"grid.ddmp_small_mass_fraction=1", "grid.ddmp_small_mass_fraction", "[0, 1)"},
       {"novalue", "", "key=value"},
   }));
   try {
