@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "mpm/bucket_columns.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particle_buckets.hpp"
 #include "mpm/shape_ddmp.hpp"
@@ -57,10 +58,11 @@ inline int first_table_block(int bucket_coord) {
   return floor_div(ParticleBuckets::cells * bucket_coord + ParticleBuckets::buffer_lo, SparseGrid::block_width);
 }
 
-// Calls fn(grid_nodes, buffer_nodes, count) for every run of nodes of the bucket's box that
-// is contiguous in both the grid block and the buffer (along k, at most a block wide).
+// Calls fn(grid_nodes, buffer_nodes, count) for every run of nodes of the bucket's columns
+// (node columns, bucket_columns.hpp) that is contiguous in both the grid block and the buffer
+// (along k, at most a block wide).
 template <class GridPtr, class Fn>
-void for_each_box_run(const Bucket& b, const BlockTable& table, GridPtr grid_blocks,
+void for_each_box_run(const Bucket& b, const BucketColumns& columns, const BlockTable& table, GridPtr grid_blocks,
                       BucketBuffer& buffer, Fn&& fn) {
   constexpr int bw = SparseGrid::block_width;
   int first[3];
@@ -69,9 +71,11 @@ void for_each_box_run(const Bucket& b, const BlockTable& table, GridPtr grid_blo
     const int bi = floor_div(i, bw), li = i - bw * bi;
     for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
       const int bj = floor_div(j, bw), lj = j - bw * bj;
-      for (int k = b.box_lo[2]; k <= b.box_hi[2];) {
+      const size_t column = BucketColumns::index(i - buffer.origin[0], j - buffer.origin[1]);
+      const int k_hi = buffer.origin[2] + columns.hi[column];
+      for (int k = buffer.origin[2] + columns.lo[column]; k <= k_hi;) {
         const int bk = floor_div(k, bw), lk = k - bw * bk;
-        const int count = std::min(bw - lk, b.box_hi[2] - k + 1);
+        const int count = std::min(bw - lk, k_hi - k + 1);
         const int block = table[((bi - first[0]) * 4 + (bj - first[1])) * 4 + (bk - first[2])];
         fn(grid_blocks(block) + SparseGrid::node_offset(li, lj, lk), buffer.data.data() + buffer.offset(i, j, k), count);
         k += count;
@@ -80,13 +84,15 @@ void for_each_box_run(const Bucket& b, const BlockTable& table, GridPtr grid_blo
   }
 }
 
-// Zeroes the buffer nodes of the bucket's box. Runs are a few nodes long: one SIMD store
+// Zeroes the buffer nodes of the bucket's columns. Runs are a few nodes long: one SIMD store
 // per node beats a call to memset per run (the box passes cost 10 % of a step with the calls).
-inline void clear_box(const Bucket& b, BucketBuffer& buffer) {
-  const int nodes = b.box_hi[2] - b.box_lo[2] + 1;
+inline void clear_box(const Bucket& b, const BucketColumns& columns, BucketBuffer& buffer) {
   for (int i = b.box_lo[0]; i <= b.box_hi[0]; ++i)
     for (int j = b.box_lo[1]; j <= b.box_hi[1]; ++j) {
-      Real* row = buffer.data.data() + buffer.offset(i, j, b.box_lo[2]);
+      const size_t column = BucketColumns::index(i - buffer.origin[0], j - buffer.origin[1]);
+      const int k_lo = buffer.origin[2] + columns.lo[column], nodes = columns.hi[column] - columns.lo[column] + 1;
+      if (nodes <= 0) continue;
+      Real* row = buffer.data.data() + buffer.offset(i, j, k_lo);
       for (int n = 0; n < nodes; ++n) store_lanes(row + n * lane::count, NodeLanes{});
     }
 }
@@ -94,9 +100,9 @@ inline void clear_box(const Bucket& b, BucketBuffer& buffer) {
 // Adds the buffer's box into the grid: lanes 0–6 summed, the constraint lane by maximum
 // (so the same rigid body wins wherever it touches, independent of order). One node is one
 // SIMD value: all lanes summed at once, then the constraint lane replaced by the maximum.
-inline void add_box_to_grid(const Bucket& b, const BlockTable& table, SparseGrid& grid,
-                            BucketBuffer& buffer) {
-  for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+inline void add_box_to_grid(const Bucket& b, const BucketColumns& columns, const BlockTable& table,
+                            SparseGrid& grid, BucketBuffer& buffer) {
+  for_each_box_run(b, columns, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
                    [](Real* g, const Real* l, int count) {
                      for (int n = 0; n < count; ++n, g += lane::count, l += lane::count) {
                        const NodeLanes grid_node = load_lanes(g), buffer_node = load_lanes(l);
@@ -108,9 +114,9 @@ inline void add_box_to_grid(const Bucket& b, const BlockTable& table, SparseGrid
 }
 
 // Copies the grid's nodes of the bucket's box into the buffer (node by node, as above).
-inline void copy_box_from_grid(const Bucket& b, const BlockTable& table, const SparseGrid& grid,
-                               BucketBuffer& buffer) {
-  for_each_box_run(b, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
+inline void copy_box_from_grid(const Bucket& b, const BucketColumns& columns, const BlockTable& table,
+                               const SparseGrid& grid, BucketBuffer& buffer) {
+  for_each_box_run(b, columns, table, [&](int block) { return grid.block(size_t(block)); }, buffer,
                    [](const Real* g, Real* l, int count) {
                      for (int n = 0; n < count; ++n) store_lanes(l + n * lane::count, load_lanes(g + n * lane::count));
                    });

@@ -129,6 +129,7 @@ void merge_tally(BucketTally& into, const BucketTally& from) {
     into.cell_min[a] = std::min(into.cell_min[a], from.cell_min[a]);
     into.cell_max[a] = std::max(into.cell_max[a], from.cell_max[a]);
   }
+  into.cells.merge(from.cells);
   into.drifted = into.drifted || from.drifted;
   if (into.fault == ParticleFault::none) into.fault = from.fault, into.fault_particle = from.fault_particle;
 }

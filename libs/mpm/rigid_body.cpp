@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -47,10 +48,26 @@ bool rigid_body_contains(const RigidBodySettings& b, const Vec3& d, const Vec3& 
   return (x - b.plane_point - d).dot(b.plane_normal.normalized()) < reach;
 }
 
+bool rigid_body_may_reach(const RigidBodySettings& b, const Vec3& d, const Vec3& lo, const Vec3& hi, Real h) {
+  const Real reach = h * (1 + 1e-6);  // wider than rigid_body_contains' h (1 − 1e-9)
+  if (b.shape == RigidShape::box) {
+    for (int a = 0; a < 3; ++a)
+      if (!(hi[a] > b.box_min[a] + d[a] - reach && lo[a] < b.box_max[a] + d[a] + reach)) return false;
+    return true;
+  }
+  // The smallest signed distance of the box's corners from the plane.
+  const Vec3 n = b.plane_normal.normalized();
+  Real nearest = 0;
+  for (int a = 0; a < 3; ++a)
+    nearest += std::min(n[a] * (lo[a] - b.plane_point[a] - d[a]), n[a] * (hi[a] - b.plane_point[a] - d[a]));
+  return nearest < reach;
+}
+
 namespace {
 // Calls fn(block, node) for every node with mass whose support overlaps the body and that no
 // other body holds (constraint lane 0, or this body's marker), after claiming it; block by
-// block in parallel.
+// block in parallel. Blocks the body cannot reach are skipped whole: on a lattice the plates
+// touch a few percent of the blocks, and testing every node cost 8 % of a step (T2P30).
 template <class Fn>
 void for_each_claimed_node(SparseGrid& grid, Real h, const RigidBodySettings& body, const RigidBodyState& state,
                            Real marker, Fn&& fn) {
@@ -58,6 +75,9 @@ void for_each_claimed_node(SparseGrid& grid, Real h, const RigidBodySettings& bo
   tbb::parallel_for(tbb::blocked_range<size_t>(0, grid.block_count(), 8), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t b = r.begin(); b < r.end(); ++b) {
       const auto c = grid.coord(b);
+      const Vec3 lo = SparseGrid::node_position(c[0] * bw, c[1] * bw, c[2] * bw, h);
+      const Vec3 hi = SparseGrid::node_position(c[0] * bw + bw - 1, c[1] * bw + bw - 1, c[2] * bw + bw - 1, h);
+      if (!rigid_body_may_reach(body, state.displacement, lo, hi, h)) continue;
       Real* block = grid.block(b);
       for (int i = 0; i < bw; ++i)
         for (int j = 0; j < bw; ++j)

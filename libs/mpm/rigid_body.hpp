@@ -95,6 +95,11 @@ struct RigidBodyState {
 // Whether the node at x (m) is coupled to the body displaced by d: its support, the open
 // cube of half-width h (the cell size) around it, overlaps the body.
 bool rigid_body_contains(const RigidBodySettings& body, const Vec3& displacement, const Vec3& x, Real h);
+// False only if no node in the box [lo, hi] (m) can be coupled to the body: a test on the
+// box's corners with a margin far above round-off, so the solver skips whole grid blocks
+// far from the body and rigid_body_contains still decides every node near it.
+bool rigid_body_may_reach(const RigidBodySettings& body, const Vec3& displacement, const Vec3& lo, const Vec3& hi,
+                          Real h);
 
 // After update_grid_velocities (lanes m, v_new, Δv, constraint): every node with mass, not
 // held by a point-defined body (constraint lane > 0) nor claimed by another geometric body

@@ -91,7 +91,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
       const Bucket& b = s.buckets.buckets()[bi];
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
-      copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
+      copy_box_from_grid(b, c.columns[bi], c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       for (uint32_t p = b.begin; p < b.end; ++p) {
         const auto st = particle_stencil<Shape>(copy, p, h, buffer);

@@ -13,27 +13,31 @@
 
 namespace latmpm::mpm {
 
-void compute_boxes_from_positions(SolverState& s, const StepContext& c) {
+void compute_boxes_from_positions(SolverState& s, StepContext& c) {
   const Real inv_h = 1 / c.settings.cell_size;
   auto& list = s.buckets.buckets();
   const Particles& ps = s.particles;
+  c.columns.assign(list.size(), BucketColumns{});
   tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
     Bucket& b = list[bi];
     std::array<int, 3> lo{max_cell_coord, max_cell_coord, max_cell_coord}, hi{-max_cell_coord, -max_cell_coord, -max_cell_coord};
     for (uint32_t p = b.begin; p < b.end; ++p) {
       const auto cell = cell_of(ps.position[p], inv_h);
       for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
+      if (ParticleBuckets::within_drift(b, cell)) c.columns[bi].add_cell(b, cell);
     }
     b.box_lo = lo;
     b.box_hi = hi;
   });
 }
 
-void take_cell_ranges(SolverState& s, const StepContext& c) {
+void take_cell_ranges(SolverState& s, StepContext& c) {
   auto& list = s.buckets.buckets();
+  c.columns.resize(list.size());
   for (size_t bi = 0; bi < list.size(); ++bi) {
     list[bi].box_lo = c.tallies[bi].cell_min;
     list[bi].box_hi = c.tallies[bi].cell_max;
+    c.columns[bi] = c.tallies[bi].cells;
     if (c.tallies[bi].drifted) s.needs_sort = true;
   }
   if (s.needs_sort) return;

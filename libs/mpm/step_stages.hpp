@@ -63,6 +63,8 @@ struct StepContext {
   tbb::task_arena arena;
   tbb::enumerable_thread_specific<BucketBuffer> buffers;
   std::vector<BlockTable> tables;   // per bucket: its 4×4×4 grid blocks, from prepare_grid
+  // Per bucket (bucket_columns.hpp): its cells' columns, then from prepare_grid its nodes'.
+  std::vector<BucketColumns> columns;
   std::vector<BucketTally> tallies;
   std::vector<RunTally> run_tallies;
   PassSums sums;
@@ -102,9 +104,9 @@ inline constexpr int grid_halo = Shape::smoothed_on_grid ? 1 : 0;
 // --- Stages without a shape function (step_stages.cpp) ------------------------------------
 
 // Node boxes from the particles' cells (after a sort or when positions were set).
-void compute_boxes_from_positions(SolverState& s, const StepContext& c);
+void compute_boxes_from_positions(SolverState& s, StepContext& c);
 // After a pass that moved the particles: the buckets' cell ranges for the next step.
-void take_cell_ranges(SolverState& s, const StepContext& c);
+void take_cell_ranges(SolverState& s, StepContext& c);
 // The bucket tallies of a gather summed (in bucket order) and reduced over the domain;
 // throws NumericalError naming the first faulty particle.
 void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient);
@@ -141,7 +143,7 @@ template <class Shape>
 void prepare_grid(SolverState& s, StepContext& c) {
   // A sort on any process is a sort on all: the buckets stay those of one process.
   s.needs_sort = c.domain.reduce_max(s.needs_sort ? 1 : 0) > 0;
-  if (s.needs_sort) {
+  if (s.needs_sort || c.columns.size() != s.buckets.buckets().size()) {
     c.domain.migrate_particles(s.particles, c.settings.cell_size);
     s.buckets.sort(s.particles, c.settings.cell_size);
     compute_boxes_from_positions(s, c);
@@ -162,6 +164,9 @@ void prepare_grid(SolverState& s, StepContext& c) {
         for (int k = floor_div(b.box_lo[2] - e, bw); k <= floor_div(b.box_hi[2] + e, bw); ++k)
           keys.push_back(SparseGrid::block_key(i, j, k));
   }
+  tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
+    c.columns[bi] = stencil_columns<Shape::reach_below, Shape::reach_above>(c.columns[bi]);
+  });
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   s.grid.set_active_blocks(keys);
@@ -204,11 +209,11 @@ void scatter(SolverState& s, StepContext& c) {
         buffer.attach(b);
         buffer.ddmp_alpha = c.ddmp_partition();
         buffer.ddmp_alpha_cache = alpha_cache;
-        clear_box(b, buffer);
+        clear_box(b, c.columns[colour[k]], buffer);
         if constexpr (nodal_stress) clear_ddmp_box(b, c.tables[colour[k]], buffer);
         scatter_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(),
                                     c.settings.cell_size, buffer);
-        add_box_to_grid(b, c.tables[colour[k]], s.grid, buffer);
+        add_box_to_grid(b, c.columns[colour[k]], c.tables[colour[k]], s.grid, buffer);
         if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.tables[colour[k]], buffer, c.ddmp_nodal);
       }
     });
@@ -238,7 +243,7 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
       buffer.ddmp_alpha_cache = alpha_cache;
-      copy_box_from_grid(b, c.tables[bi], s.grid, buffer);
+      copy_box_from_grid(b, c.columns[bi], c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,
                                  buffer, tallies[bi], &c.run_tallies[b.run_begin]);

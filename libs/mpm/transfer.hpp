@@ -66,6 +66,7 @@ struct BucketTally {
   Real max_speed_sq = 0;  // m²/s²
   Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
+  BucketColumns cells;  // the cells' columns (within the drift limit)
   bool drifted = false;
   ParticleFault fault = ParticleFault::none;
   uint32_t fault_particle = 0;
@@ -357,6 +358,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
       tally.cell_max[a] = std::max(tally.cell_max[a], cell[a]);
     }
     if (!ParticleBuckets::within_drift(b, cell)) tally.drifted = true;
+    else tally.cells.add_cell(b, cell);
   };
 
   // Sums of the bucket, one lane per particle slot of a group, added up at the end.

@@ -2,13 +2,14 @@
 // flyer striking an elastic block conserves the system's momentum and energy and its
 // recorded force carries its momentum change; a rigid box plate and paper A's
 // heavy-particle plate load a column alike; a fixed base carries a resting block's weight
-// and never moves.
+// and never moves; the solver skips only grid blocks the body cannot couple.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <iomanip>
 
 #include "mpm/simulation.hpp"
+#include "mpm/sparse_grid.hpp"
 #include "point_builders.hpp"
 
 using namespace latmpm;
@@ -212,4 +213,39 @@ TEST_CASE("A block resting under gravity on a fixed rigid base carries its weigh
   CHECK(moved == 0);  // exactly at rest, every step
   CHECK(std::abs(impulse - (momentum + weight * time)) < 1e-9 * weight * time);
   CHECK(mean == Approx(weight).epsilon(0.01));
+}
+
+TEST_CASE("A grid block the block test skips holds no node the rigid body couples", "[mpm][rigid]") {
+  // rigid_body_may_reach lets the solver skip whole blocks; every node rigid_body_contains
+  // takes must lie in a block it keeps. Brute force over blocks of 4³ nodes around bodies of
+  // both shapes, their surfaces on node planes, between them and slanted.
+  const Real h = 0.64e-3;
+  RigidBodySettings box;
+  box.box_min = Vec3(2 * h, -3 * h, 1.5 * h);
+  box.box_max = Vec3(9 * h, 4.25 * h, 6 * h);
+  RigidBodySettings flat, slanted;
+  flat.shape = slanted.shape = RigidShape::half_space;
+  flat.plane_point = Vec3(0, 0, 8 * h);
+  flat.plane_normal = Vec3(0, 0, -1);
+  slanted.plane_point = Vec3(0.3 * h, h, 2 * h);
+  slanted.plane_normal = Vec3(1, -2, 0.5);
+  int kept = 0, skipped = 0;
+  for (const auto* body : {&box, &flat, &slanted})
+    for (const Vec3& d : {Vec3::Zero().eval(), Vec3(0, 0, -3.000000001 * h), Vec3(0.37 * h, -1.1 * h, 2 * h)})
+      for (int bx = -4; bx < 4; ++bx)
+        for (int by = -4; by < 4; ++by)
+          for (int bz = -4; bz < 5; ++bz) {
+            const Vec3 lo = SparseGrid::node_position(4 * bx, 4 * by, 4 * bz, h);
+            const Vec3 hi = SparseGrid::node_position(4 * bx + 3, 4 * by + 3, 4 * bz + 3, h);
+            const bool may = rigid_body_may_reach(*body, d, lo, hi, h);
+            bool any = false;
+            for (int i = 0; i < 4; ++i)
+              for (int j = 0; j < 4; ++j)
+                for (int k = 0; k < 4; ++k)
+                  any = any || rigid_body_contains(*body, d, SparseGrid::node_position(4 * bx + i, 4 * by + j, 4 * bz + k, h), h);
+            if (any) REQUIRE(may);
+            (may ? kept : skipped) += 1;
+          }
+  // The test skips blocks at all (else it would be true everywhere and save nothing).
+  CHECK(skipped > kept);
 }
