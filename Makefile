@@ -1,6 +1,7 @@
 # latmpm front door.
 #   make        configure and build (Release) -> build/bin/
-#   make test   install missing packages, build, run every test (ctest)
+#   make test   install missing packages, build, run every test (ctest; the mpi.* tests on
+#               2-4 processes use the MPI solver built beside it in build/mpi/)
 #   make demo   install, build, run the default experiment
 #   make bench  build and run the benchmarks (figures go to docs/benchmarks.md by hand)
 #   make fuzz   build and run the hostile-input suite, every case (docs/robustness.md)
@@ -49,7 +50,7 @@ fuzz: deps
 # The MPI solver beside the one-process build; `make test BUILD=build-mpi` runs the suite
 # there, with the mpi.* tests on 2 and 4 processes.
 mpi:
-	@LATMPM_MPI=1 bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh
 	$(MAKE) build BUILD=$(MPI_BUILD) CMAKE_ARGS="-DLATMPM_MPI=ON $(CMAKE_ARGS)"
 
 clean:

@@ -1,7 +1,9 @@
 # Cluster prediction for docs/cluster.md (issue 21): a model from measured figures, not a measurement.
 import math
 rate = 8.6e6            # particle-updates per CPU second and core (docs/experiments.md: T2P30 at 0.64 mm, 1 thread)
-halo_cut_128 = 1.6e6    # bytes per process and step across one whole cut of T2P30 5x5x5 at 1.28 mm (measured, 2 processes)
+# bytes per process and step across one whole cut of T2P30 5x5x5 at paper resolution, 0.64 mm (measured, 2 processes,
+# rigid plates: 532,817 points, 21,550 halo nodes; docs/cluster.md "Strong scaling")
+halo_cut_064 = 1.638e6
 node_cores = 32         # cores per node, one process per core
 nic = 12.5e9            # bytes/s per node: InfiniBand HDR100 (100 Gb/s)
 node_mem = 100e9        # bytes/s of a node's memory for intra-node MPI copies (shared memory)
@@ -14,7 +16,7 @@ def faces(parts):       # a cube-like part's faces shared with other parts, in u
     return 6 * (1 - parts ** (-1 / 3))
 
 def case(name, points, steps, cell, cross):
-    cut = halo_cut_128 * (1.28e-3 / cell) ** 2 * cross   # bytes across one whole cut
+    cut = halo_cut_064 * (0.64e-3 / cell) ** 2 * cross   # bytes across one whole cut
     blocks = points / 8 / 64 * 2.5                      # 8 points a cell, 64 nodes a block, x2.5 for the stencils' reach
     t1 = points / rate
     print(f"{name}: {points/1e6:.1f} M points, {steps} steps, ~{blocks/1e3:.0f}k blocks; one core {t1*steps/3600:.0f} h ({t1*1e3:.0f} ms/step)")

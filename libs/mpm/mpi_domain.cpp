@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
@@ -24,6 +25,32 @@ constexpr double imbalance_threshold = 1.25;
 
 void check(int status, const char* what) {
   if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+// A record of `bytes` bytes (a packed particle, a table row) as one MPI element, so that
+// counts and displacements are in records: MPI's counts are ints, and an int of bytes
+// overflows near 10 M particles of ~217 bytes, an int of particles at 2^31 of them.
+class RecordType {
+ public:
+  explicit RecordType(size_t bytes) {
+    if (bytes == 0 || bytes > size_t(std::numeric_limits<int>::max())) throw std::logic_error("RecordType: size");
+    check(MPI_Type_contiguous(int(bytes), MPI_BYTE, &type_), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&type_), "MPI_Type_commit");
+  }
+  ~RecordType() { MPI_Type_free(&type_); }
+  RecordType(const RecordType&) = delete;
+  RecordType& operator=(const RecordType&) = delete;
+  operator MPI_Datatype() const { return type_; }
+
+ private:
+  MPI_Datatype type_ = MPI_DATATYPE_NULL;
+};
+
+// A count of records as MPI's int, refused rather than wrapped.
+int record_count(size_t records) {
+  if (records > size_t(std::numeric_limits<int>::max()))
+    throw std::runtime_error("MPI: " + std::to_string(records) + " records exceed an int count");
+  return int(records);
 }
 
 // --- Particles as bytes: every field of the registry (particle_fields.hpp), in its order ---
@@ -234,30 +261,31 @@ std::vector<Real> MpiDomain::sum_in_order(const std::vector<uint64_t>& keys, con
 std::vector<Real> MpiDomain::sum_in_sequence(const std::vector<uint64_t>& keys, const std::vector<uint32_t>& counts,
                                              const std::vector<Real>& rows, size_t width) const {
   if (!distributed()) return sum_rows(rows, width);
-  int groups = int(keys.size()), values = int(rows.size());
-  std::vector<int> group_sizes(static_cast<size_t>(size_)), value_sizes(static_cast<size_t>(size_));
+  // Items (`width` values each) counted as records: a sum over particles has one per particle.
+  const RecordType item(width * sizeof(Real));
+  int groups = record_count(keys.size()), items = record_count(rows.size() / width);
+  std::vector<int> group_sizes(static_cast<size_t>(size_)), item_sizes(static_cast<size_t>(size_));
   check(MPI_Gather(&groups, 1, MPI_INT, group_sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
-  check(MPI_Gather(&values, 1, MPI_INT, value_sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
-  const auto group_displs = displacements(group_sizes), value_displs = displacements(value_sizes);
+  check(MPI_Gather(&items, 1, MPI_INT, item_sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
+  const auto group_displs = displacements(group_sizes), item_displs = displacements(item_sizes);
   const bool root = rank_ == 0;
-  std::vector<uint64_t> all_keys(root ? size_t(group_displs.back() + group_sizes.back()) : 0);
+  std::vector<uint64_t> all_keys(root ? size_t(group_displs.back()) + size_t(group_sizes.back()) : 0);
   std::vector<uint32_t> all_counts(all_keys.size());
-  std::vector<Real> all_rows(root ? size_t(value_displs.back() + value_sizes.back()) : 0);
+  std::vector<Real> all_rows(root ? (size_t(item_displs.back()) + size_t(item_sizes.back())) * width : 0);
   check(MPI_Gatherv(keys.data(), groups, MPI_UINT64_T, all_keys.data(), group_sizes.data(), group_displs.data(),
                     MPI_UINT64_T, 0, comm_),
         "MPI_Gatherv");
   check(MPI_Gatherv(counts.data(), groups, MPI_UINT32_T, all_counts.data(), group_sizes.data(), group_displs.data(),
                     MPI_UINT32_T, 0, comm_),
         "MPI_Gatherv");
-  check(MPI_Gatherv(rows.data(), values, MPI_DOUBLE, all_rows.data(), value_sizes.data(), value_displs.data(),
-                    MPI_DOUBLE, 0, comm_),
+  check(MPI_Gatherv(rows.data(), items, item, all_rows.data(), item_sizes.data(), item_displs.data(), item, 0, comm_),
         "MPI_Gatherv");
   std::vector<Real> sum(width, Real(0));
   if (root) {
     // Where each bucket's items start, then the buckets in key order.
     std::vector<size_t> first(all_keys.size());
     for (int q = 0, g = 0; q < size_; ++q) {
-      size_t at = size_t(value_displs[size_t(q)]);
+      size_t at = size_t(item_displs[size_t(q)]) * width;
       for (int k = 0; k < group_sizes[size_t(q)]; ++k, ++g) first[size_t(g)] = at, at += all_counts[size_t(g)] * width;
     }
     std::vector<uint32_t> order(all_keys.size());
@@ -321,29 +349,30 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   // Each particle to the owner of its bucket.
   const FieldMask present = fields_present(ps);
   const size_t bytes = particle_bytes(ps, present);
+  const RecordType particle(bytes);  // counts in particles
   std::vector<int> owner(ps.size());
   std::vector<int> send_counts(size_t(size_), 0);
   for (size_t p = 0; p < ps.size(); ++p) {
     owner[p] = partition_.owner(bucket_of(ps.position[p], inv_h));
-    if (owner[p] != rank_) send_counts[size_t(owner[p])] += int(bytes);
+    if (owner[p] != rank_) ++send_counts[size_t(owner[p])];
   }
   std::vector<int> receive_counts(size_t(size_), 0);
   check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, comm_), "MPI_Alltoall");
   const auto send_displs = displacements(send_counts), receive_displs = displacements(receive_counts);
-  std::vector<char> out(size_t(send_displs.back() + send_counts.back()));
-  std::vector<char> in(size_t(receive_displs.back() + receive_counts.back()));
-  std::vector<int> fill = send_displs;
+  std::vector<char> out((size_t(send_displs.back()) + size_t(send_counts.back())) * bytes);
+  std::vector<char> in((size_t(receive_displs.back()) + size_t(receive_counts.back())) * bytes);
+  std::vector<size_t> fill(send_displs.begin(), send_displs.end());
   std::vector<uint8_t> keep(ps.size());
   for (size_t p = 0; p < ps.size(); ++p) {
     keep[p] = owner[p] == rank_;
     if (keep[p]) continue;
-    char* at = out.data() + fill[size_t(owner[p])];
+    char* at = out.data() + fill[size_t(owner[p])] * bytes;
     pack_particle(ps, p, at, present);
-    fill[size_t(owner[p])] += int(bytes);
+    ++fill[size_t(owner[p])];
     ++traffic_.particles_sent;
   }
-  check(MPI_Alltoallv(out.data(), send_counts.data(), send_displs.data(), MPI_BYTE, in.data(), receive_counts.data(),
-                      receive_displs.data(), MPI_BYTE, comm_),
+  check(MPI_Alltoallv(out.data(), send_counts.data(), send_displs.data(), particle, in.data(), receive_counts.data(),
+                      receive_displs.data(), particle, comm_),
         "MPI_Alltoallv");
   traffic_.migration_bytes += out.size();
   keep_particles(ps, keep);
@@ -474,15 +503,16 @@ void MpiDomain::exchange_halo(SparseGrid& grid, int colour) {
 }
 
 template <class T>
-std::vector<T> MpiDomain::gather_to_root(const std::vector<T>& local, std::vector<int>& sizes) const {
-  static_assert(std::is_same_v<T, char> || std::is_same_v<T, int64_t>);
-  const MPI_Datatype type = std::is_same_v<T, char> ? MPI_BYTE : MPI_INT64_T;
-  const int n = int(local.size());
-  sizes.assign(size_t(size_), 0);
-  check(MPI_Gather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
-  const auto displs = displacements(sizes);
-  std::vector<T> all(rank_ == 0 ? size_t(displs.back() + sizes.back()) : 0);
-  check(MPI_Gatherv(local.data(), n, type, all.data(), sizes.data(), displs.data(), type, 0, comm_), "MPI_Gatherv");
+std::vector<T> MpiDomain::gather_to_root(const std::vector<T>& local, size_t width, std::vector<int>& records) const {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const RecordType record(width * sizeof(T));
+  const int n = record_count(local.size() / width);
+  records.assign(size_t(size_), 0);
+  check(MPI_Gather(&n, 1, MPI_INT, records.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
+  const auto displs = displacements(records);
+  std::vector<T> all(rank_ == 0 ? (size_t(displs.back()) + size_t(records.back())) * width : 0);
+  check(MPI_Gatherv(local.data(), n, record, all.data(), records.data(), displs.data(), record, 0, comm_),
+        "MPI_Gatherv");
   return all;
 }
 
@@ -490,7 +520,7 @@ Particles MpiDomain::gather_particles(const Particles& local) const {
   if (!distributed()) return rank_ == 0 ? local : Particles{};
   std::vector<int> sizes;
   const FieldMask present = fields_present(local);
-  const std::vector<char> in = gather_to_root(packed(local, present), sizes);
+  const std::vector<char> in = gather_to_root(packed(local, present), particle_bytes(local, present), sizes);
   Particles all;
   if (rank_ != 0) return all;
   // The same fields as the local set (history columns, optional fields present or not).
@@ -502,25 +532,27 @@ Particles MpiDomain::gather_particles(const Particles& local) const {
 
 BucketedParticles MpiDomain::gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
   if (!distributed()) return rank_ == 0 ? BucketedParticles{local, {buckets.buckets(), buckets.runs()}} : BucketedParticles{};
-  std::vector<int> byte_sizes, bucket_sizes, run_sizes;
+  std::vector<int> particle_counts, bucket_counts, run_counts;
   const FieldMask present = fields_present(local);
-  const std::vector<char> bytes = gather_to_root(packed(local, present), byte_sizes);
-  const std::vector<int64_t> bucket_table = gather_to_root(bucket_rows(buckets.buckets()), bucket_sizes);
-  const std::vector<int64_t> run_table = gather_to_root(run_rows(buckets.runs()), run_sizes);
+  const size_t width = particle_bytes(local, present);
+  const std::vector<char> bytes = gather_to_root(packed(local, present), width, particle_counts);
+  const std::vector<int64_t> bucket_table = gather_to_root(bucket_rows(buckets.buckets()), bucket_row_width, bucket_counts);
+  const std::vector<int64_t> run_table = gather_to_root(run_rows(buckets.runs()), run_row_width, run_counts);
   BucketedParticles out;
   if (rank_ != 0) return out;
   // Each process's tables index its own particles and runs; merged, they are one process's.
-  const size_t width = particle_bytes(local, present);
   const size_t processes = size_t(size_);
   std::vector<BucketTables> parts(processes);
   std::vector<size_t> counts(processes);
   auto bucket_at = bucket_table.begin();
   auto run_at = run_table.begin();
   for (size_t q = 0; q < processes; ++q) {
-    parts[q].buckets = buckets_from_rows({bucket_at, bucket_at + bucket_sizes[q]});
-    parts[q].runs = runs_from_rows({run_at, run_at + run_sizes[q]});
-    bucket_at += bucket_sizes[q], run_at += run_sizes[q];
-    counts[q] = size_t(byte_sizes[q]) / width;
+    const auto bucket_values = std::ptrdiff_t(size_t(bucket_counts[q]) * bucket_row_width);
+    const auto run_values = std::ptrdiff_t(size_t(run_counts[q]) * run_row_width);
+    parts[q].buckets = buckets_from_rows({bucket_at, bucket_at + bucket_values});
+    parts[q].runs = runs_from_rows({run_at, run_at + run_values});
+    bucket_at += bucket_values, run_at += run_values;
+    counts[q] = size_t(particle_counts[q]);
   }
   MergedLayout merged = merge_bucket_layouts(parts, counts);
   out.particles = local;  // the same fields as the local set

@@ -91,10 +91,11 @@ class MpiDomain {
   // Which particle fields the run carries (particle_fields.hpp's order), the same on every
   // process (collective): optional fields are empty where a process holds no particle.
   std::vector<uint8_t> fields_present(const Particles& particles) const;
-  // Every process's `local` values to rank 0, one after the other in rank order; `sizes`
-  // receives each process's count there. Collective.
+  // Every process's `local` records (`width` values each: a packed particle's bytes, a
+  // table's row) to rank 0, one after the other in rank order; `records` receives each
+  // process's count of records there. Collective.
   template <class T>
-  std::vector<T> gather_to_root(const std::vector<T>& local, std::vector<int>& sizes) const;
+  std::vector<T> gather_to_root(const std::vector<T>& local, size_t width, std::vector<int>& records) const;
   std::vector<Real> gather_in_rank_order(const Real* local, int count) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;

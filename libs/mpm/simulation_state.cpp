@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "mpm/bucket_layout.hpp"
+#include "mpm/bucket_partition.hpp"
 #include "mpm/checkpoint_io.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/simulation.hpp"
@@ -98,6 +99,28 @@ void check_ranges(const std::string& file, const std::string& dataset, const std
     throw InputError(file, dataset, "the " + what + " ranges end at " + std::to_string(expected) + ", not at " +
                                         std::to_string(limit));
 }
+
+// The buckets (rows of 7: coord x y z, begin, end, run_begin, run_end; ranges checked
+// already) as a sort leaves them: in bucket order, each coordinate once, each bucket's runs
+// covering exactly its particles. Several processes cut this table by bucket and keep their
+// buckets' particles by these ranges (bucket_layout.hpp), so a table that merely tiles
+// [0, n) twice over could hand a particle to two processes or to none.
+void check_bucket_table(const std::string& file, const std::string& dataset, const std::vector<int64_t>& b,
+                        const std::vector<int64_t>& r) {
+  const std::vector<uint64_t> keys = bucket_order_keys(buckets_from_rows(b));
+  for (size_t row = 0; row < keys.size(); ++row) {
+    const int64_t* x = &b[7 * row];
+    if (row > 0 && keys[row] <= keys[row - 1])
+      throw InputError(file, dataset, "row " + std::to_string(row) + ": bucket (" + std::to_string(x[0]) + ", " +
+                                          std::to_string(x[1]) + ", " + std::to_string(x[2]) +
+                                          ") is not after the previous one in bucket order (a bucket twice?)");
+    const bool covered = x[5] == x[6] ? x[3] == x[4] : r[3 * size_t(x[5]) + 1] == x[3] && r[3 * size_t(x[6] - 1) + 2] == x[4];
+    if (!covered)
+      throw InputError(file, dataset, "row " + std::to_string(row) + ": runs [" + std::to_string(x[5]) + ", " +
+                                          std::to_string(x[6]) + ") do not cover exactly its particles [" +
+                                          std::to_string(x[3]) + ", " + std::to_string(x[4]) + ")");
+  }
+}
 }  // namespace
 
 void Simulation::save_state(Hdf5File& f, const std::string& g) const { save_state(&f, g); }
@@ -179,8 +202,12 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
                                   std::numeric_limits<int32_t>::max() / 8);
   check_ranges(f.path(), g + "/buckets/buckets", b, 7, 3, int64_t(n), "particle");
   check_ranges(f.path(), g + "/buckets/buckets", b, 7, 5, int64_t(r.size() / 3), "run");
+  check_bucket_table(f.path(), g + "/buckets/buckets", b, r);
   BucketTables tables{buckets_from_rows(b), runs_from_rows(r)};
   const bool needs_sort = sorting.integer("needs_sort", 0, 1) != 0;
+  if (b.empty() && n > 0 && !needs_sort)
+    throw InputError(f.path(), g + "/buckets/needs_sort",
+                     "0 with no buckets: the particles would be in no bucket (1 sorts them first)");
 
   const CheckpointReader solver = in.sub("solver");
   StepDiagnostics d = state_.diagnostics;

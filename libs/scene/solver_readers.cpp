@@ -130,6 +130,8 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   if (!(s.tolerance > 0 && s.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
   s.check_stability = solver.boolean("check_stability", s.check_stability);
   s.predictor = solver.boolean("predictor", s.predictor);
+  s.max_increment_growth = solver.number("max_increment_growth", s.max_increment_growth);
+  if (!(s.max_increment_growth >= 1)) solver.fail("max_increment_growth", "must be at least 1 (1: fixed increments)");
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

@@ -6,9 +6,9 @@
 # processes. On 3 processes, and on 2 processes stopped at step 60 and resumed on 3,
 # against one process: series.csv byte for byte, every snapshot's particles (h5diff), and
 # the log must show migration bytes.
-# usage: points_crossing_processes.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
+# usage: points_crossing_processes.sh BIN_DIR SOURCE_DIR MPI_SOLVE MPIRUN   (empty: skip)
 set -euo pipefail
-bin_dir=$1 mpirun=${3:-}
+bin_dir=$1 mpi_solve=${3:-} mpirun=${4:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 cat > falling.toml <<'EOF'
 # The column of column-tiny.toml, plates omitted, falling sideways: a uniform acceleration

@@ -4,9 +4,9 @@
 # 80, resumed on 3 processes to step 140, resumed on one process to step 200, against one
 # process for 200 steps. The checkpoint of the 2 processes must also be the one a single
 # process writes at step 80 (the same state datasets, h5diff).
-# usage: resume_across_process_counts.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
+# usage: resume_across_process_counts.sh BIN_DIR SOURCE_DIR MPI_SOLVE MPIRUN   (empty: skip)
 set -euo pipefail
-bin_dir=$1 source_dir=$2 mpirun=${3:-}
+bin_dir=$1 source_dir=$2 mpi_solve=${3:-} mpirun=${4:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 run=("$source_dir/data/scenes/column-tiny.toml" --set points.0.file=c-points.h5 --set output.snapshot_every=40
      --quiet --threads 1)

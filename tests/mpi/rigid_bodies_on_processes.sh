@@ -5,9 +5,9 @@
 # (2) replaced by a free flyer (an impact, paper A Sec. 6: a 50 g box at 2 m/s, no-slip).
 # series.csv byte for byte (loads, reactions, the flyer's motion) and the last snapshot's
 # particles (h5diff). Penalty contact (the scene as it is) is refused on 2 processes (exit 2).
-# usage: rigid_bodies_on_processes.sh BIN_DIR SOURCE_DIR MPIRUN   (MPIRUN empty: skip)
+# usage: rigid_bodies_on_processes.sh BIN_DIR SOURCE_DIR MPI_SOLVE MPIRUN   (empty: skip)
 set -euo pipefail
-bin_dir=$1 source_dir=$2 mpirun=${3:-}
+bin_dir=$1 source_dir=$2 mpi_solve=${3:-} mpirun=${4:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 scene=("$source_dir/data/scenes/column-platen-contact.toml" --set points.0.file=c-points.h5 --set run.max_steps=150
        --set output.snapshot_every=150 --quiet --threads 1)

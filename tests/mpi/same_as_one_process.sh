@@ -3,9 +3,9 @@
 # processes and requires the same series.csv byte for byte and the same particles in every
 # snapshot (positions in double precision): the MPI domain keeps the one-process sums'
 # order (docs/cluster.md), so nothing may differ, not even in the last bit.
-# usage: same_as_one_process.sh BIN_DIR SOURCE_DIR N MPIRUN   (MPIRUN empty: MPI not built, skip)
+# usage: same_as_one_process.sh BIN_DIR SOURCE_DIR N MPI_SOLVE MPIRUN   (empty: no MPI, skip)
 set -euo pipefail
-bin_dir=$1 source_dir=$2 processes=$3 mpirun=${4:-}
+bin_dir=$1 source_dir=$2 processes=$3 mpi_solve=${4:-} mpirun=${5:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
 # 200 steps (the plate travels 0.08 mm), snapshots at steps 0, 100 and 200: the
 # decomposition, the halo exchange, the ordered sums and the gathered snapshots. No point
@@ -26,3 +26,12 @@ for f in one/snapshots/snap_*.h5; do
   h5diff "$f" "many/snapshots/$(basename "$f")" /particles /particles
 done
 echo "series and snapshots of $processes processes equal one process's, bit for bit"
+# A file rank 0 cannot write (here the snapshot folder, a plain file) while the others wait
+# in a collective: every process stops with exit 2 and the file named, none is left waiting
+# (MpiSession: MPI_Abort with the status; a hang ends in mpi's timeout, exit 124).
+mkdir blocked && touch blocked/snapshots
+status=0
+mpi "$processes" "${run[@]}" -o blocked 2> blocked.err || status=$?
+[ "$status" = 2 ] || { echo "rank 0 unable to write: exit $status, expected 2" >&2; cat blocked.err >&2; exit 1; }
+grep -q "blocked/snapshots: cannot create the snapshot directory" blocked.err
+echo "rank 0 unable to write its snapshots: all $processes processes stopped, exit 2"

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 
+#include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
@@ -81,4 +82,52 @@ TEST_CASE("A simulation restored from its saved state continues bit for bit", "[
   INFO("shape " << to_string(shape));
   CHECK(differing == 0);
   CHECK(first->last_diagnostics().kinetic_energy > 0);
+}
+
+TEST_CASE("A checkpoint whose buckets do not hold each particle once, in bucket order, is refused",
+          "[mpm][checkpoint]") {
+  // Several MPI processes cut the bucket table and keep their buckets' particles by its
+  // ranges: a table that tiles the particles but out of order, or whose runs stray into the
+  // next bucket, would give a particle to two processes or to none (docs/cluster.md).
+  const Real h = 1e-3;
+  PointSet points = empty_point_set(h, 2);
+  add_points(points, Eigen::Vector3d(-5 * h, -3 * h, 0), Eigen::Vector3d(6 * h, 4 * h, 10 * h), "block");
+  Settings s;
+  s.cell_size = h;
+  s.gravity = Vec3(0, 0, -9.81);
+  const std::vector<BodySettings> bodies = {deformable("block", elastic(1e6, 0.3, 1000))};
+  Simulation saved(points, bodies, s);
+  for (int n = 0; n < 3; ++n) saved.step();
+  const latmpm::test::ScratchDir scratch("checkpoint-buckets");
+  const std::string path = scratch / "state.h5";
+  const std::string table = "/state/buckets/buckets";
+  {
+    Hdf5File file(path, Hdf5File::Mode::create);
+    saved.save_state(file, "/state");
+  }
+  std::vector<size_t> dims;
+  const std::vector<int64_t> rows = Hdf5File(path, Hdf5File::Mode::read).read_int64(table, &dims);
+  REQUIRE(dims.size() == 2);
+  REQUIRE(dims[0] >= 2);  // two buckets at least
+  auto refused_with = [&](const std::vector<int64_t>& tampered, const std::string& message) {
+    {
+      Hdf5File file(path, Hdf5File::Mode::read_write);
+      file.write(table, tampered, dims);
+    }
+    Simulation restored(points, bodies, s);
+    Hdf5File file(path, Hdf5File::Mode::read);
+    CHECK_THROWS_AS(restored.load_state(file, "/state"), InputError);
+    CHECK_THROWS_WITH(restored.load_state(file, "/state"), Catch::Contains(table) && Catch::Contains(message));
+  };
+  {  // the untampered table loads
+    Simulation restored(points, bodies, s);
+    Hdf5File file(path, Hdf5File::Mode::read);
+    CHECK_NOTHROW(restored.load_state(file, "/state"));
+  }
+  std::vector<int64_t> swapped = rows;  // the first two buckets' coordinates exchanged
+  for (int a = 0; a < 3; ++a) std::swap(swapped[size_t(a)], swapped[size_t(7 + a)]);
+  refused_with(swapped, "is not after the previous one in bucket order");
+  std::vector<int64_t> straying = rows;  // the first bucket takes the second one's first run
+  ++straying[6], ++straying[7 + 5];
+  refused_with(straying, "do not cover exactly its particles");
 }
