@@ -63,6 +63,12 @@ struct StepDiagnostics {
   // numerical dissipation of the scheme (zero for flip = 1), kept apart from the physical
   // ones (plastic, friction), J.
   Real blend_dissipation = 0;
+  // Kinetic energy grid contact's rule (field_contact.hpp) took out of the nodes since the
+  // start: at each contact node Σ_K ½ m_K (|v*_K|² − |v_K|²), the fields' free velocities
+  // against the corrected ones, J. A nodal estimate, not in energy_error: it overcounts the
+  // points' loss 4–9× (the head-on bars, docs/contact.md "Energy"), from nodes where a field
+  // has little mass (½ Δt² |f|²/m_K).
+  Real grid_contact_dissipation = 0;
   Real energy_error = 0;
 };
 

@@ -17,6 +17,24 @@ namespace latmpm::mpm {
 namespace {
 // The lowest field of a non-empty mask.
 int lowest_field(uint32_t mask) { return __builtin_ctz(mask); }
+
+// The group tags: each name as given, "prefix*" as every tag of the point set starting
+// with prefix (in name order: the strut groups strut_c0, strut_c1, ... of a lattice).
+std::vector<std::string> expand_groups(const std::vector<std::string>& names, const PointSet& points,
+                                       const std::string& where) {
+  std::vector<std::string> tags;
+  for (const std::string& name : names) {
+    const bool pattern = !name.empty() && name.back() == '*';
+    const std::string prefix = pattern ? name.substr(0, name.size() - 1) : name;
+    const size_t before = tags.size();
+    for (const auto& [tag, mask] : points.tags)
+      if (pattern ? tag.compare(0, prefix.size(), prefix) == 0 : tag == name) tags.push_back(tag);
+    if (tags.size() == before)
+      throw InputError(where, "contact.groups",
+                       pattern ? "no tag of the point set starts with '" + prefix + "'" : "the point set has no tag '" + name + "'");
+  }
+  return tags;
+}
 }  // namespace
 
 ContactFields make_contact_fields(const FieldContactSettings& settings, Real mass_scaling, const PointSet& points,
@@ -32,7 +50,6 @@ ContactFields make_contact_fields(const FieldContactSettings& settings, Real mas
   // present gets the next field.
   const size_t nb = bodies.size();
   std::vector<int> body_field(nb, -1);
-  std::vector<std::vector<int>> group_field(nb, std::vector<int>(settings.groups.size(), -1));
   auto new_field = [&](const std::string& name) {
     if (f.count == max_contact_fields)
       throw InputError(where, "contact.groups", "grid contact takes at most " + std::to_string(max_contact_fields) +
@@ -50,13 +67,20 @@ ContactFields make_contact_fields(const FieldContactSettings& settings, Real mas
       f.density[size_t(body_field[b])] = body_density(b);
     }
   if (f.count == 0) new_field("rigid");
-  std::vector<const std::vector<uint8_t>*> tags;
-  for (const auto& tag : settings.groups) {
-    const auto it = points.tags.find(tag);
-    if (it == points.tags.end())
-      throw InputError(where, "contact.groups", "the point set has no tag '" + tag + "'");
-    tags.push_back(&it->second);
+  // Bodies glued where they meet: their rest fields bonded (a lattice and its printed plate).
+  uint32_t glued = 0;
+  for (const std::string& name : settings.bonded_bodies) {
+    size_t b = 0;
+    while (b < nb && bodies[b].name != name) ++b;
+    if (b == nb || body_field[b] < 0)
+      throw InputError(where, "contact.bond", "'" + name + "' is not a deformable body of the scene");
+    glued |= uint32_t(1) << body_field[b];
   }
+  for (uint32_t rest = glued; rest; rest &= rest - 1) f.bonded[size_t(lowest_field(rest))] |= glued;
+  const std::vector<std::string> groups = expand_groups(settings.groups, points, where);
+  std::vector<const std::vector<uint8_t>*> tags;
+  for (const auto& tag : groups) tags.push_back(&points.tags.at(tag));
+  std::vector<std::vector<int>> group_field(nb, std::vector<int>(groups.size(), -1));
   point_field.assign(points.size(), 0);
   for (size_t p = 0; p < points.size(); ++p) {
     const size_t b = size_t(points.body[p]);
@@ -66,7 +90,7 @@ ContactFields make_contact_fields(const FieldContactSettings& settings, Real mas
       if (!(*tags[g])[p]) continue;
       int& gf = group_field[b][g];
       if (gf < 0) {
-        gf = new_field(bodies[b].name + "/" + settings.groups[g]);
+        gf = new_field(bodies[b].name + "/" + groups[g]);
         f.density[size_t(gf)] = body_density(b);
         // A group moves with the rest of its body where they meet: the joints.
         f.bonded[size_t(gf)] |= uint32_t(1) << body_field[b];
@@ -77,10 +101,10 @@ ContactFields make_contact_fields(const FieldContactSettings& settings, Real mas
     }
     point_field[p] = uint8_t(field);
   }
-  for (size_t g = 0; g < settings.groups.size(); ++g) {
+  for (size_t g = 0; g < groups.size(); ++g) {
     bool any = false;
     for (size_t b = 0; b < nb; ++b) any = any || group_field[b][g] >= 0;
-    if (!any) throw InputError(where, "contact.groups", "no deformable point carries the tag '" + settings.groups[g] + "'");
+    if (!any) throw InputError(where, "contact.groups", "no deformable point carries the tag '" + groups[g] + "'");
   }
   f.lanes.resize(size_t(f.count));
   return f;

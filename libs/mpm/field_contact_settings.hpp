@@ -13,7 +13,9 @@ enum class UpdateScheme;
 struct FieldContactSettings {
   bool enabled = false;
   Real friction = 0;                // Coulomb coefficient μ ≥ 0 between fields
-  std::vector<std::string> groups;  // point tags: each makes a field of its own in every body it tags
+  std::vector<std::string> groups;  // point tags: each makes a field of its own in every body it tags;
+                                    // "prefix*" stands for every tag of the point set starting with prefix
+  std::vector<std::string> bonded_bodies;  // deformable bodies whose rest fields move as one where they meet
   // Fields in contact only where their points' reference volume on the node, Σ_k m_k/ρ_k,
   // fills at least this fraction of the node's h³ (Nairn 2013's volume check): without it
   // fields touch as soon as they share a node, up to 1.5 cells apart with GIMP.

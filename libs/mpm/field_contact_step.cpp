@@ -55,6 +55,7 @@ void step_usl_fields(SolverState& s, StepContext& c, ContactFields& f, Real dt) 
     for (size_t b = 0; b < c.tallies.size(); ++b) merge_tally(c.tallies[b], f.pass_tallies[b]);
   });
   absorb_tallies(s, c, true, true, true);
+  c.sums.grid_contact_dissipation = f.dissipated;
 }
 }  // namespace
 

@@ -285,6 +285,7 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.gravity_work += dt * c.sums.gravity_power;
   d.kinetic_energy = c.sums.kinetic;
   d.blend_dissipation += c.sums.blend_dissipation;
+  d.grid_contact_dissipation += c.sums.grid_contact_dissipation;
   d.strain_energy = c.sums.strain;
   d.plastic_dissipation = c.sums.dissipation;
   d.max_speed = std::sqrt(c.sums.max_speed_sq);

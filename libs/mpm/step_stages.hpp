@@ -46,6 +46,7 @@ using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
 struct PassSums {
   Real kinetic = 0, strain = 0, dissipation = 0, gravity_power = 0;
   Real blend_dissipation = 0;  // of this step's velocity pass (BucketTally)
+  Real grid_contact_dissipation = 0;  // of this step's grid contact rule (ContactFields::dissipated)
   Real max_speed_sq = 0, max_wave_speed_sq = 0;
 };
 

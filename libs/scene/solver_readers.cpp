@@ -130,9 +130,30 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   if (!(s.tolerance > 0 && s.tolerance < 1)) solver.fail("tolerance", "must lie in (0, 1)");
   s.check_stability = solver.boolean("check_stability", s.check_stability);
   s.predictor = solver.boolean("predictor", s.predictor);
+  s.max_increment_growth = solver.number("max_increment_growth", s.max_increment_growth);
+  if (!(s.max_increment_growth >= 1)) solver.fail("max_increment_growth", "must be at least 1 (1: fixed increments)");
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }
+
+namespace {
+// A comma-separated list of names (spaces around each trimmed); an empty entry fails.
+std::vector<std::string> name_list(TableReader& table, const std::string& key, const std::string& what) {
+  const std::string list = table.text(key, "");
+  std::vector<std::string> names;
+  for (size_t start = 0; start <= list.size();) {
+    size_t end = list.find(',', start);
+    if (end == std::string::npos) end = list.size();
+    std::string name = list.substr(start, end - start);
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    if (!name.empty()) names.push_back(name);
+    else if (end < list.size()) table.fail(key, "has an empty " + what + " name ('" + list + "')");
+    start = end + 1;
+  }
+  return names;
+}
+}  // namespace
 
 void read(TableReader& contact, mpm::FieldContactSettings& s) {
   s.enabled = true;
@@ -140,19 +161,10 @@ void read(TableReader& contact, mpm::FieldContactSettings& s) {
   if (!(s.friction >= 0)) contact.fail("friction", "must be zero or positive (a Coulomb coefficient)");
   s.fill = contact.number("fill", s.fill);
   if (!(s.fill >= 0 && s.fill <= 1)) contact.fail("fill", "must lie in [0, 1] (a fraction of the node's volume h^3)");
-  // Point tags, comma-separated: each tagged part of a body is a field of its own.
-  std::string list = contact.text("groups", "");
-  s.groups.clear();
-  for (size_t start = 0; start <= list.size();) {
-    size_t end = list.find(',', start);
-    if (end == std::string::npos) end = list.size();
-    std::string tag = list.substr(start, end - start);
-    tag.erase(0, tag.find_first_not_of(' '));
-    tag.erase(tag.find_last_not_of(' ') + 1);
-    if (!tag.empty()) s.groups.push_back(tag);
-    else if (end < list.size()) contact.fail("groups", "has an empty tag name ('" + list + "')");
-    start = end + 1;
-  }
+  // Point tags (a trailing * matches every tag it starts): each tagged part of a body is a field of its own.
+  s.groups = name_list(contact, "groups", "tag");
+  // Bodies glued where they meet (a lattice and its printed plate).
+  s.bonded_bodies = name_list(contact, "bond", "body");
 }
 
 }  // namespace latmpm::scene_toml

@@ -171,6 +171,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
   path_timer.reset();
   log.line("linear solver: " + solver.describe());
+  if (sp.loading.check_stability || path.cut_backs > 0)
+    log.line("stability checks answered by Newton's last factorisation: " + std::to_string(path.checks_from_newton) +
+             "; increments cut back after a Newton failure: " + std::to_string(path.cut_backs));
   log_phase_times(log, set_up, problem.assembly_time(), solver.times(), path.stability_check, output, path_time);
   series.save();
 

@@ -1,6 +1,9 @@
 #include "statics/displacement_control.hpp"
 
+#include <algorithm>
 #include <memory>
+#include <tuple>
+#include <utility>
 
 #include "core/errors.hpp"
 
@@ -14,6 +17,10 @@ Dirichlet platen_conditions(const StaticProblem& problem, const PlatenLoading& l
   return d;
 }
 
+// Below this relative residual a positive definite true tangent of Newton's last step
+// answers the stability check (displacement_control.hpp).
+constexpr Real newton_check_residual = 1e-4;
+
 // Σ over the nodes of the internal force along the platen's motion (N).
 Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const Vector& f_int) {
   Real load = 0;
@@ -22,6 +29,14 @@ Real nodal_load(const std::vector<size_t>& nodes, const Vec3& direction, const V
 }
 
 }  // namespace
+
+std::pair<Real, Real> parabola_vertex(Real t0, Real f0, Real t1, Real f1, Real t2, Real f2) {
+  const Real d01 = (f1 - f0) / (t1 - t0), d12 = (f2 - f1) / (t2 - t1);
+  const Real a = (d12 - d01) / (t2 - t0);  // F = f1 + d01 (t − t1) + a (t − t0)(t − t1)
+  const Real slope1 = d01 + a * (t1 - t0);  // F'(t1)
+  const Real t = t1 - slope1 / (2 * a);
+  return {t, f1 + d01 * (t - t1) + a * (t - t0) * (t - t1)};
+}
 
 PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, SparseSolver& solver,
                           const NewtonOptions& newton, const IncrementObserver& observe) {
@@ -88,7 +103,11 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.residual = r.residual.back();
     point.min_jacobian = r.min_jacobian;
     point.stable = true;
-    if (loading.check_stability) {
+    const bool newton_answers = solver.is_direct() && r.last_step_true_tangent && r.residual.size() >= 2 &&
+                                r.residual[r.residual.size() - 2] <= newton_check_residual;
+    if (loading.check_stability && newton_answers) {
+      ++report.checks_from_newton;
+    } else if (loading.check_stability) {
       PhaseTimer timer(report.stability_check);
       problem.assemble_hessian(state, false);
       SparseMatrix& K = problem.hessian();
@@ -98,12 +117,25 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     return true;
   };
 
-  const Real step = loading.travel / loading.increments;
-  for (int i = 1; i <= loading.increments; ++i) {
+  const Real base_step = loading.travel / loading.increments;
+  const Real max_step = base_step * std::max(Real(1), loading.max_step_growth);
+  const Real end_tolerance = 1e-9 * loading.travel;
+  Real step = base_step;
+  int increment = 0;
+  while (stable_travel < loading.travel - end_tolerance) {
+    ++increment;
+    const Real target = loading.travel - stable_travel < step + end_tolerance
+                            ? loading.travel
+                            : (max_step > base_step ? stable_travel + step : increment * base_step);
     PathPoint point;
     std::string failure;
     Vector next = u;
-    const bool converged = solve_at(i * step, next, point, failure);
+    const bool converged = solve_at(target, next, point, failure);
+    if (!converged && step > base_step * (1 + 1e-9)) {  // too large a step: halve it, retry
+      step = std::max(base_step, Real(0.5) * step);
+      ++report.cut_backs;
+      continue;
+    }
     // A load below the previous one: past a limit point (the peak of the static path).
     const bool past_peak = converged && loading.end_at_load_maximum && !report.points.empty() &&
                            point.load < report.points.back().load;
@@ -112,13 +144,35 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       accept(next, point.travel);
       report.points.push_back(point);
       if (observe) observe(point, u);
+      // Grow while Newton is fast, shrink back where it slows (near a peak the load-maximum
+      // test needs close points).
+      if (point.newton_iterations <= loading.fast_newton)
+        step = std::min(max_step, step * loading.step_growth);
+      else if (point.newton_iterations > 2 * loading.fast_newton)
+        step = std::max(base_step, step / loading.step_growth);
       continue;
     }
+    report.ended = true;
+    report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
+    if (past_peak) {
+      // The peak lies between the last two stable loads' travel and this one: the vertex of
+      // the parabola through the last three points (the start counts as (0, 0)). Bisection
+      // finds no better: on a flat top every bisection load may fall (docs/statics.md).
+      const size_t n = report.points.size();
+      const Real t0 = n >= 2 ? report.points[n - 2].travel : 0, f0 = n >= 2 ? report.points[n - 2].load : 0;
+      const PathPoint& top = report.points.back();
+      std::tie(report.end_travel, report.end_load) =
+          parabola_vertex(t0, f0, top.travel, top.load, point.travel, point.load);
+      report.last_stable_travel = top.travel;
+      report.last_stable_load = top.load;
+      report.points.push_back(point);
+      if (observe) observe(point, next);
+      return report;
+    }
     // Bracket the end of the static path between the last stable travel and this one.
-    Real low = stable_travel, high = i * step;
+    Real low = stable_travel, high = target;
     bool high_converged = converged;
     Real high_load = point.load;
-    report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
     for (int b = 0; b < loading.bisections; ++b) {
       const Real mid = Real(0.5) * (low + high);
       PathPoint trial_point;
@@ -143,8 +197,6 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       report.points.push_back(point);
       if (observe) observe(point, next);
     }
-    report.ended = true;
-    report.end_travel = high;
     stable_travel = low;
     for (const PathPoint& p : report.points)
       if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;

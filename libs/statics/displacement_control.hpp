@@ -6,12 +6,17 @@
 // (unprojected) tangent is factorised: the static path ends at the first increment where it
 // is not positive definite (a bifurcation or limit point: buckling), where the load falls
 // (past a limit point; the only check where the true tangent is unusable, docs/statics.md)
-// or where Newton fails; the travel there is bracketed by bisection. The check factorises
-// with the Newton solver itself when that is direct (one analysis, one factor in memory:
-// the next Newton step refactorises anyway), else with its own CHOLMOD.
+// or where Newton fails; the travel there is bracketed by bisection (a load maximum: located
+// by the parabola through the last three loads). The check factorises with the Newton solver
+// itself when that is direct (one analysis, one factor in memory: the next Newton step
+// refactorises anyway), else with its own CHOLMOD; where Newton's last step was a
+// true-tangent step of a direct solver taken at a relative residual ≤ 1e-4, that
+// factorisation (positive definite) answers the check: the state moved less since than the
+// smallest eigenvalue of the tangent changes over an increment.
 #pragma once
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "statics/projected_newton.hpp"
@@ -30,6 +35,14 @@ struct PlatenLoading {
   // Start each increment's Newton from the secant extrapolation of the last two equilibria
   // (from the last one where that inverts a point or does not converge).
   bool predictor = true;
+  // Adaptive increments: the step starts at travel / increments and grows by `step_growth`
+  // after each increment whose Newton took at most `fast_newton` steps, up to
+  // max_step_growth × that, and shrinks by it after one that took more than twice that;
+  // a Newton failure at a larger step halves it and retries before the path is declared
+  // ended. 1: fixed increments.
+  Real max_step_growth = 1;
+  Real step_growth = 2;
+  int fast_newton = 4;
 };
 
 struct PathPoint {
@@ -51,8 +64,12 @@ struct PathReport {
   std::vector<PathPoint> points;  // the converged increments, in order (bisection included)
   bool ended = false;             // an instability or a failure ended the path before `travel`
   std::string end_reason;         // "tangent not positive definite", or Newton's failure
-  Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable)
+  Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable);
+                                  // a load maximum: the vertex of the parabola through the last
+                                  // three loads (no bisection: the top is flat)
   Real end_load = 0;              // N: the load there (interpolated), or the last stable load
+  int cut_backs = 0;              // increments halved after a Newton failure (adaptive steps)
+  int checks_from_newton = 0;     // stability checks answered by Newton's last factorisation
   Real last_stable_travel = 0;    // m: the last travel found stable
   Real last_stable_load = 0;      // N: the load there
   PhaseTime stability_check;      // true-tangent assemblies and factorisations after increments
@@ -60,6 +77,12 @@ struct PathReport {
 
 // Called after each converged increment with its point and displacement field.
 using IncrementObserver = std::function<void(const PathPoint&, const Vector&)>;
+
+// The vertex of the parabola through three (travel, load) points, t0 < t1 < t2 with
+// F1 ≥ F0 and F1 > F2 (so it is concave and its vertex lies in [t0, t2]): {travel, load}.
+// Where the path ends at a load maximum, the peak (no bisection: on a flat top every
+// bisection load may fall).
+std::pair<Real, Real> parabola_vertex(Real t0, Real f0, Real t1, Real f1, Real t2, Real f2);
 
 PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, SparseSolver& solver,
                           const NewtonOptions& newton = {}, const IncrementObserver& observe = {});

@@ -104,6 +104,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       }
       if (factorized) {
         if (!projected) ++report.true_tangent_steps;
+        report.last_step_true_tangent = !projected;
         break;
       }
       if (!projected) true_tangent_failed_at = residual;

@@ -50,6 +50,8 @@ struct NewtonReport {
   std::vector<Real> energy;       // E(u) at the same points, J
   std::vector<Real> step;         // α of each step
   int true_tangent_steps = 0;     // steps taken with the unprojected Hessian
+  bool last_step_true_tangent = false;  // the last step's Hessian was the true one, factorised
+                                        // (a direct solver: positive definite)
   int linear_iterations = 0;      // summed over the steps (CG, AMG; 1 per direct solve)
   Real linear_residual = 0;       // relative residual of the last linear solve
   Real min_jacobian = 1;          // smallest det F_p at the end

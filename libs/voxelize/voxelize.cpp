@@ -11,6 +11,7 @@
 #include "voxelize/level_set_sampling.hpp"
 #include "voxelize/mesh_level_set.hpp"
 #include "voxelize/point_regions.hpp"
+#include "voxelize/strut_partition.hpp"
 
 namespace latmpm {
 namespace {
@@ -73,6 +74,7 @@ Voxelized voxelize_strut_graph(const StrutGraph& graph, const VoxelizeOptions& o
   for (const Plate& p : graph.plates) plate_names.push_back(p.name);
   tag_regions(out.points, plate_names);
   out.points.parameters = graph.parameters;
+  if (options.strut_groups > 0) tag_strut_groups(out.points, graph, partition_struts(graph, options.strut_groups));
   return out;
 }
 

@@ -19,6 +19,9 @@ struct VoxelizeOptions {
   int ppc = 2;               // points per cell per direction, ≥ 1
   double voxel_size = 0;     // level-set voxel (m); 0 = automatic, Δ/2 with Δ = h/ppc
   bool curvature_correction = true;
+  // Strut graphs: tag the struts' points by strut group in at most this many colours for
+  // grid contact (strut_partition.hpp); 0: no group tags.
+  int strut_groups = 0;
   // Called with a stage name ("level set", "points") and the fraction of it done.
   std::function<void(const std::string&, double)> progress;
 
@@ -43,7 +46,8 @@ struct Voxelized {
 
 // Bodies: the graph's strut body and one per plate (plates win where they overlap struts);
 // tags "record", "bottom_layer", "top_layer" and one per plate (point_regions.hpp); the
-// graph's parameters are copied.
+// graph's parameters are copied; with options.strut_groups, the strut groups' tags
+// "strut_c<k>" (strut_partition.hpp).
 Voxelized voxelize_strut_graph(const StrutGraph& graph, const VoxelizeOptions& options);
 
 // One body named `body_name`; tags "record", "bottom_layer", "top_layer".

@@ -153,12 +153,13 @@ TEST_CASE("The contact table turns on grid contact with its friction, groups and
   CHECK_FALSE(none.settings.field_contact.enabled);
 
   const Scene s = parse(test::column_scene_head("{ time = \"1ms\" }") +
-                        "[contact]\nfriction = 0.3\ngroups = \"left, right\"\nfill = 0.8\n");
+                        "[contact]\nfriction = 0.3\ngroups = \"left, right\"\nfill = 0.8\nbond = \"lattice, top_plate\"\n");
   const mpm::FieldContactSettings& c = s.settings.field_contact;
   CHECK(c.enabled);
   CHECK(c.friction == 0.3);
   CHECK(c.groups == std::vector<std::string>{"left", "right"});
   CHECK(c.fill == 0.8);
+  CHECK(c.bonded_bodies == std::vector<std::string>{"lattice", "top_plate"});
   const Scene again = parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent");
   CHECK(again.settings.field_contact.groups == c.groups);
   CHECK(again.settings.field_contact.friction == c.friction);
@@ -170,6 +171,7 @@ TEST_CASE("The contact table turns on grid contact with its friction, groups and
       {"friction = -0.1", "contact.friction", "zero or positive"},
       {"fill = 1.5", "contact.fill", "[0, 1]"},
       {"groups = \"a,,b\"", "contact.groups", "empty tag"},
+      {"bond = \"a,,b\"", "contact.bond", "empty body"},
       {"frction = 0.1", "contact.frction", "unknown key"},
   }));
   CAPTURE(bad.line);

@@ -74,6 +74,8 @@ void declare_options(latmpm::CommandLine& cl) {
   cl.option("body", "NAME", "STL: body name of the part", "part");
   cl.flag("repair", "STL: fix what CGAL can (stitch, orient, drop degenerate faces, fill small holes)");
   cl.flag("no-self-intersection-check", "STL: skip the (slowest) check for self-intersections");
+  cl.option("strut-groups", "N", "strut graphs: tag the struts' points by strut group in at most N colours "
+                                 "(tags strut_c0...), for grid contact between struts (docs/contact.md)", "0");
   cl.flag("force", "voxelize even with less than one point across the thinnest strut");
   cl.option("max-memory", "BYTES", "refuse work estimated to need more memory, e.g. 8GB "
                                    "[default: the machine's physical memory]");
@@ -193,6 +195,10 @@ int run(int argc, char** argv) {
       throw InputError("--voxel", "", "coarser than the point spacing " + mm(options.spacing()) +
                                           " would misplace surface volumes; use at most that");
   }
+  const long strut_groups = cl.integer("strut-groups");
+  if (strut_groups < 0 || strut_groups > 30)
+    throw InputError("--strut-groups", "", "must be between 0 (no groups) and 30 (grid contact's 32 fields less the body's and a plate's)");
+  options.strut_groups = static_cast<int>(strut_groups);
   const double max_memory =
       cl.given("max-memory") ? parse_bytes(cl.text("max-memory"), "--max-memory") : physical_memory_bytes();
   InputFile input(cl.text("input"), "input");
@@ -244,6 +250,7 @@ int run(int argc, char** argv) {
     if (report) std::cerr << "  extent " << describe_extent(estimate.bounds) << "\n";
     result = voxelize_strut_graph(graph, options);
   } else {
+    if (options.strut_groups > 0) throw InputError("--strut-groups", "", "applies only to a strut graph (an STL has no struts)");
     const TriangleMesh mesh = load_part(cl, input, report);
     const ResourceEstimate estimate = estimate_resources(mesh, options);
     hint = unit_hint(estimate.bounds, stl_metres_per_unit(cl), options.spacing());
