@@ -286,37 +286,60 @@ void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
 // material point instead, the force reached nodes that hold little of a CPDI point's mass,
 // whose kicks put twice the contact's work into the grid: +3 % in the SHPB's energy
 // balance, docs/paper-b.md.)
+// Point p's spreading weights as a record: its force, its terms, the weights S_ip of the
+// nodes base + (i, j, k) (zero: not touched).
+template <class Shape>
+ContactSpread contact_spread(const SolverState& s, const StepContext& c, size_t t, Real h) {
+  const uint32_t p = c.contact.touching[t];
+  ContactSpread out;
+  out.index = p;
+  out.body = s.particles.contact_body[p];
+  for (int a = 0; a < 3; ++a) out.force[a] = c.contact.force[p][a];
+  out.spring_energy = c.contact.touching_spring[t];
+  out.friction_work = c.contact.touching_friction[t];
+  if constexpr (Shape::uses_domain_vertices) {
+    constexpr int N = CpdiBoxStencil::n;
+    static_assert(N <= ContactSpread::max_nodes_per_axis);
+    const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
+    out.nodes = N;
+    for (int a = 0; a < 3; ++a) out.base[a] = st.base[a];
+    for (int i = 0; i < N * N * N; ++i) out.weight[i] = st.w[i];
+  } else {
+    using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
+    constexpr int N = Weights::nodes_per_axis;
+    static_assert(N <= ContactSpread::max_nodes_per_axis);
+    const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
+    out.nodes = N;
+    for (int a = 0; a < 3; ++a) out.base[a] = st.base[a];
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k) out.weight[(i * N + j) * N + k] = st.w[i][0] * st.w[j][1] * st.w[k][2];
+  }
+  return out;
+}
+
 template <class Shape>
 void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
   const Real h = c.settings.cell_size;
-  // Active: the point's own scatter stencil reaches these nodes.
-  auto add = [&](int i, int j, int k, Real w, const Vec3& f) {
-    Real* lanes = s.grid.node(i, j, k);
-    for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
-  };
-  if constexpr (Shape::uses_domain_vertices) {
-    constexpr int N = CpdiBoxStencil::n;
-    for (uint32_t p : c.contact.touching) {
-      const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-          for (int k = 0; k < N; ++k)
-            if (const Real w = st.w[CpdiBoxStencil::index(i, j, k)]; w > 0)
-              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
-    }
-  } else {
-    using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
-    constexpr int N = Weights::nodes_per_axis;
-    for (uint32_t p : c.contact.touching) {
-      const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-          for (int k = 0; k < N; ++k)
-            if (const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2]; w > 0)
-              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
-    }
+  std::vector<ContactSpread> spreads(c.contact.touching.size());
+  for (size_t t = 0; t < spreads.size(); ++t) spreads[t] = contact_spread<Shape>(s, c, t, h);
+  // Several processes: every touching point's record, in the one-process order; each
+  // process adds them to the nodes it holds (whole after the scatter's halo exchange) and
+  // forms the reaction sums in that order (contact_spread.hpp).
+  if (c.domain.process_count() > 1) {
+    spreads = c.domain.contact_spreads_in_order(std::move(spreads), s.buckets);
+    contact_sums_in_order(spreads, c.rigid_bodies.size(), c.contact);
+  }
+  for (const ContactSpread& sp : spreads) {
+    const int N = sp.nodes;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k)
+          if (const Real w = sp.weight[(i * N + j) * N + k]; w > 0)
+            if (Real* lanes = s.grid.node(sp.base[0] + i, sp.base[1] + j, sp.base[2] + k))  // held here
+              for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * sp.force[a];
   }
 }
 
