@@ -3,6 +3,7 @@
 // contact, and the carried speeds and energies the stable time step uses.
 #include "mpm/step_stages.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -18,17 +19,24 @@ void compute_boxes_from_positions(SolverState& s, StepContext& c) {
   auto& list = s.buckets.buckets();
   const Particles& ps = s.particles;
   c.columns.assign(list.size(), BucketColumns{});
+  std::atomic<bool> outside_drift{false};
   tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
     Bucket& b = list[bi];
     std::array<int, 3> lo{max_cell_coord, max_cell_coord, max_cell_coord}, hi{-max_cell_coord, -max_cell_coord, -max_cell_coord};
     for (uint32_t p = b.begin; p < b.end; ++p) {
       const auto cell = cell_of(ps.position[p], inv_h);
       for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
-      if (ParticleBuckets::within_drift(b, cell)) c.columns[bi].add_cell(b, cell);
+      if (ParticleBuckets::within_drift(b, cell))
+        c.columns[bi].add_cell(b, cell);
+      else
+        outside_drift = true;
     }
     b.box_lo = lo;
     b.box_hi = hi;
   });
+  // A point its bucket's columns cannot hold (a loaded state whose buckets no longer fit)
+  // would scatter into nodes nobody clears or adds: sort before the next scatter.
+  if (outside_drift) s.needs_sort = true;
 }
 
 void take_cell_ranges(SolverState& s, StepContext& c) {

@@ -143,6 +143,9 @@ Real stable_time_step(const SolverState& s, const StepContext& c);
 
 // --- CPDI1 domains wider than a bucket's stencil box (shape_cpdi.hpp) ------------------
 
+// The most cells a CPDI1 domain may span along an axis before the run stops (a run-away F).
+inline constexpr int max_cpdi_domain_cells = 31;
+
 // Adds the grid blocks of every wide domain's vertex nodes (one node of margin: in USF the
 // domain deforms between this and the force scatter) to `keys`.
 inline void add_wide_cpdi_blocks(const SolverState& s, const StepContext& c, std::vector<uint64_t>& keys) {
@@ -156,6 +159,15 @@ inline void add_wide_cpdi_blocks(const SolverState& s, const StepContext& c, std
     bool wide = false;
     for (int a = 0; a < 3; ++a) wide = wide || lo[a] < cell[a] - 1 || hi[a] > cell[a] + 1;
     if (!wide) continue;  // (a non-finite vertex is left to its stencil, which reports it)
+    // A domain stretched over many cells is a run-away F, not a CPDI1 domain (paper B's
+    // coarsest B1 spans 2.5 cells): stop before its bounding box activates a huge grid.
+    for (int a = 0; a < 3; ++a)
+      if (hi[a] - lo[a] > max_cpdi_domain_cells || std::abs(lo[a]) > max_cell_coord || std::abs(hi[a]) > max_cell_coord)
+        throw NumericalError("CPDI domain of point " + std::to_string(ps.id[p]) + " at (" +
+                             std::to_string(ps.position[p][0]) + ", " + std::to_string(ps.position[p][1]) + ", " +
+                             std::to_string(ps.position[p][2]) + ") m spans " + std::to_string(hi[a] - lo[a] + 1) +
+                             " cells along axis " + std::to_string(a) + " (at most " +
+                             std::to_string(max_cpdi_domain_cells + 1) + "): its deformation has run away");
     for (int i = floor_div(lo[0] - 1, bw); i <= floor_div(hi[0] + 2, bw); ++i)
       for (int j = floor_div(lo[1] - 1, bw); j <= floor_div(hi[1] + 2, bw); ++j)
         for (int k = floor_div(lo[2] - 1, bw); k <= floor_div(hi[2] + 2, bw); ++k)
@@ -190,8 +202,9 @@ void scatter_wide_cpdi_points(SolverState& s, StepContext& c) {
 template <class Shape>
 void prepare_grid(SolverState& s, StepContext& c) {
   // A sort on any process is a sort on all: the buckets stay those of one process.
-  s.needs_sort = c.domain.reduce_max(s.needs_sort ? 1 : 0) > 0;
-  if (s.needs_sort || c.columns.size() != s.buckets.buckets().size()) {
+  const bool columns_stale = c.columns.size() != s.buckets.buckets().size();
+  s.needs_sort = c.domain.reduce_max(s.needs_sort || columns_stale ? 1 : 0) > 0;
+  if (s.needs_sort) {
     c.domain.migrate_particles(s.particles, c.settings.cell_size);
     s.buckets.sort(s.particles, c.settings.cell_size);
     compute_boxes_from_positions(s, c);
@@ -338,9 +351,11 @@ void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
 // decides the contact, its weights spread the force. (Spread with the linear stencil of the
 // material point instead, the force reached nodes that hold little of a CPDI point's mass,
 // whose kicks put twice the contact's work into the grid: +3 % in the SHPB's energy
-// balance, docs/paper-b.md.)
+// balance, docs/paper-b.md.) contact_spread gives one point's weights; add_contact_forces
+// adds them.
 // Point p's spreading weights as a record: its force, its terms, the weights S_ip of the
-// nodes base + (i, j, k) (zero: not touched).
+// nodes base + (i, j, k) (zero: not touched; nodes = 0: a wide CPDI1 domain, spread vertex
+// by vertex from the local particle, one process only).
 template <class Shape>
 ContactSpread contact_spread(const SolverState& s, const StepContext& c, size_t t, Real h) {
   const uint32_t p = c.contact.touching[t];
@@ -388,11 +403,18 @@ void add_contact_forces(SolverState& s, StepContext& c) {
   }
   for (const ContactSpread& sp : spreads) {
     if constexpr (Shape::uses_domain_vertices)
-      if (sp.nodes == 0) {  // a wide CPDI1 domain (one process only): its vertices' own cells
+      if (sp.nodes == 0) {  // a wide CPDI1 domain: its vertices' own cells (sp.index is local)
+        if (c.domain.process_count() > 1)
+          throw NumericalError("a CPDI domain touching a penalty body reaches more than one cell from its centre, "
+                               "which runs on one process only");
         const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, uint32_t(sp.index), h);
         for_each_cpdi_vertex_node(st, [&](int i, int j, int k, Real w, Real, Real, Real) {
-          if (w > 0)
-            for (int a = 0; a < 3; ++a) s.grid.node(i, j, k)[lane::force + a] += w * sp.force[a];
+          if (!(w > 0)) return;
+          Real* lanes = s.grid.node(i, j, k);
+          if (!lanes)
+            throw NumericalError("CPDI domain of point " + std::to_string(s.particles.id[sp.index]) +
+                                 " spreads its contact force to a grid node outside the active grid");
+          for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * sp.force[a];
         });
         continue;
       }
@@ -403,6 +425,9 @@ void add_contact_forces(SolverState& s, StepContext& c) {
           if (const Real w = sp.weight[(i * N + j) * N + k]; w > 0)
             if (Real* lanes = s.grid.node(sp.base[0] + i, sp.base[1] + j, sp.base[2] + k))  // held here
               for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * sp.force[a];
+            else if (c.domain.process_count() == 1)  // one process holds every node its points reach
+              throw NumericalError("the contact force of point " + std::to_string(s.particles.id[sp.index]) +
+                                   " reaches a grid node outside the active grid");
   }
 }
 

@@ -22,7 +22,7 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
        "kinetic + strain + plastic dissipation + flyer energy + contact energy + friction dissipation + blend "
-       "dissipation + grid contact dissipation - initial - constraint_work - gravity_work - driven rigid bodies' work"},
+       "dissipation - initial - constraint_work - gravity_work - driven rigid bodies' work"},
       {"plastic_dissipation", "J", "plastic work of the J2 points since the start, sum V0 x j2_plastic_work"},
       {"contact_energy", "J", "energy held in the penalty bodies' contact springs, sum |f|^2 / (2 kappa)"},
       {"friction_dissipation", "J", "energy dissipated by the penalty bodies' Coulomb friction since the start"},

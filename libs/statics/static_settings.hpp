@@ -25,10 +25,11 @@ struct StaticSettings {
   LinearSolverKind linear_solver = LinearSolverKind::automatic;  // auto: CHOLMOD unless its factor is too big (sparse_solver.hpp)
   Real tolerance = 1e-8;  // relative residual force of each increment (NewtonOptions)
   bool check_stability = true;  // end the path at the first unstable equilibrium
-  bool predictor = true;
+  bool predictor = true;  // start each increment from the secant extrapolation of the last two (displacement_control.hpp)
   // Adaptive increments: the step may grow to this multiple of travel / increments while
-  // Newton converges fast (1: fixed increments; displacement_control.hpp).
-  Real max_increment_growth = 1;  // start each increment from the secant extrapolation of the last two (displacement_control.hpp)
+  // Newton converges fast (1: fixed increments; displacement_control.hpp). A grown step can
+  // step over a shallow load maximum (docs/statics.md), so 1 stays the default.
+  Real max_increment_growth = 1;
   Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
 };
 

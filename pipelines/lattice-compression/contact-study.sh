@@ -22,7 +22,8 @@ common=(--set "points.0.file=$(realpath "$out/points-$lattice-g$groups.h5")" --s
 contact=(--set 'contact.groups=strut_c*' --set contact.bond=lattice,top_plate --set "contact.friction=$friction")
 single_run="$out/run-$lattice-single" contact_run="$out/run-$lattice-g$groups-contact"
 "$bin/latmpm-solve" "$src/lattice-rigid.toml" "${common[@]}" --threads 1 --quiet -o "$single_run" &
+single_pid=$!
 "$bin/latmpm-solve" "$src/lattice-rigid.toml" "${common[@]}" "${contact[@]}" --threads 1 --quiet -o "$contact_run"
-wait
+wait "$single_pid"  # a bare wait returns 0 even when the one-field run failed
 "$bin/latmpm-post" "$single_run" "$contact_run" -o "$out/post" --title "QUICK $lattice past 10 mm: one field against strut contact" \
   --kind compression --load load_fixed --fit-range 0.3mm:1mm --label "single=$single_run" --label "contact=$contact_run"
