@@ -21,6 +21,13 @@ function(latmpm_mpi_solver out_var)
     return()
   endif()
   set(dir ${PROJECT_BINARY_DIR}/mpi)
+  # Under make, the inner build shares the outer one's job slots (-jN): $(MAKE) is make's
+  # recursive call. Other generators build with every core.
+  if(CMAKE_GENERATOR MATCHES "Make")
+    set(build $(MAKE) latmpm-solve)
+  else()
+    set(build ${CMAKE_COMMAND} --build ${dir} --target latmpm-solve --parallel)
+  endif()
   ExternalProject_Add(latmpm_mpi_solver
     SOURCE_DIR ${PROJECT_SOURCE_DIR}
     BINARY_DIR ${dir}
@@ -29,7 +36,7 @@ function(latmpm_mpi_solver out_var)
                -DCMAKE_C_COMPILER=${CMAKE_C_COMPILER}
                -DLATMPM_MPI=ON -DLATMPM_BUILD_TESTS=OFF -DLATMPM_BUILD_BENCH=OFF
                -DLATMPM_NATIVE=${LATMPM_NATIVE} -DLATMPM_PRECISION=${LATMPM_PRECISION}
-    BUILD_COMMAND ${CMAKE_COMMAND} --build ${dir} --target latmpm-solve
+    BUILD_COMMAND ${build}
     BUILD_ALWAYS ON  # the sources are this tree's: let the inner build decide what changed
     INSTALL_COMMAND ""
     BUILD_BYPRODUCTS ${dir}/bin/latmpm-solve)

@@ -30,6 +30,11 @@ struct BucketBuffer {
   DdmpPartition ddmp_alpha;  // DDMP only: the partition function α (Settings::ddmp_alpha_*)
   DdmpAlphaCache ddmp_alpha_cache;  // DDMP on the grid only: α per point for this pass
   int field = -1;  // grid contact (field_contact.hpp): the velocity field this pass takes; −1: all
+  // CPDI1 domains wider than the buffer's stencil box (shape_cpdi.hpp): the scatter lists
+  // them here and leaves them to the grid pass after the buckets; the gather reads their
+  // nodes from `grid`.
+  std::vector<uint32_t> wide_points;
+  const SparseGrid* grid = nullptr;
   // DDMP on the grid only (ddmp_grid.hpp): ddmp_values per node, allocated on first use.
   std::vector<Real> ddmp;
 

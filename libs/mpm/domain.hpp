@@ -17,6 +17,8 @@
 //                      rank 0, so a checkpoint of N processes is the one of one process.
 //   distribute_buckets a restored checkpoint (every process read all of it): each keeps
 //                      its share of the buckets as they are, so it resumes on any count.
+//   contact_spreads_in_order  penalty contact: every touching point's force record, in the
+//                      one-process particle order, on every process (contact_spread.hpp).
 //   reduce_sum/max/min the other global sums and extremes (speeds for the stable time
 //                      step, rigid couplings and contact, carried energies).
 //
@@ -28,6 +30,7 @@
 #include <vector>
 
 #include "mpm/bucket_layout.hpp"
+#include "mpm/contact_spread.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/real.hpp"
 
@@ -94,6 +97,11 @@ class SingleProcessDomain {
   // After every process read the whole state (a checkpoint): keeps this process's buckets
   // and their particles, in their order.
   void distribute_buckets(Particles&, BucketTables&) {}
+  // Every process's records (`mine`: index = the point's index here, in ascending order),
+  // their index made the one-process one, in that order. Collective.
+  std::vector<ContactSpread> contact_spreads_in_order(std::vector<ContactSpread> mine, const ParticleBuckets&) const {
+    return mine;
+  }
 };
 
 }  // namespace latmpm::mpm

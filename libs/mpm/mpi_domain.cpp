@@ -579,4 +579,37 @@ void MpiDomain::distribute_buckets(Particles& ps, BucketTables& tables) {
   distributed_ = true;
 }
 
+// The one-process order is every process's buckets in bucket order (bucket_layout.hpp): a
+// point's index there is the particles of the buckets before its own plus its place in it.
+std::vector<ContactSpread> MpiDomain::contact_spreads_in_order(std::vector<ContactSpread> mine,
+                                                               const ParticleBuckets& buckets) const {
+  if (!distributed()) return mine;  // every process holds every particle, in the one-process order
+  const std::vector<Bucket>& local = buckets.buckets();
+  std::vector<uint64_t> flat;  // (key, particles) of each bucket here
+  for (const Bucket& b : local) flat.push_back(bucket_order_key(b)), flat.push_back(b.end - b.begin);
+  const std::vector<uint64_t> all = allgather_keys(flat, comm_, size_).keys;
+  std::vector<std::pair<uint64_t, uint64_t>> counts;
+  for (size_t i = 0; i + 1 < all.size(); i += 2) counts.emplace_back(all[i], all[i + 1]);
+  std::sort(counts.begin(), counts.end());
+  std::map<uint64_t, uint64_t> first;  // bucket key -> its first particle's one-process index
+  uint64_t before = 0;
+  for (const auto& [key, n] : counts) first[key] = before, before += n;
+  for (ContactSpread& s : mine) {
+    const auto b = size_t(std::upper_bound(local.begin(), local.end(), s.index,
+                                           [](uint64_t p, const Bucket& x) { return p < x.end; }) -
+                          local.begin());
+    s.index = first.at(bucket_order_key(local.at(b))) + (s.index - local[b].begin);
+  }
+  const RecordType record(sizeof(ContactSpread));
+  const int n = record_count(mine.size());
+  std::vector<int> sizes(size_t(size_), 0);
+  check(MPI_Allgather(&n, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm_), "MPI_Allgather");
+  const auto displs = displacements(sizes);
+  std::vector<ContactSpread> out(size_t(displs.back()) + size_t(sizes.back()));
+  check(MPI_Allgatherv(mine.data(), n, record, out.data(), sizes.data(), displs.data(), record, comm_),
+        "MPI_Allgatherv");
+  std::sort(out.begin(), out.end(), [](const ContactSpread& a, const ContactSpread& b) { return a.index < b.index; });
+  return out;
+}
+
 }  // namespace latmpm::mpm

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "mpm/bucket_partition.hpp"
+#include "mpm/contact_spread.hpp"
 #include "mpm/domain.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/real.hpp"
@@ -79,6 +80,8 @@ class MpiDomain {
   Particles gather_particles(const Particles& local) const;
   BucketedParticles gather_buckets(const Particles& local, const ParticleBuckets& buckets) const;
   void distribute_buckets(Particles& particles, BucketTables& tables);
+  std::vector<ContactSpread> contact_spreads_in_order(std::vector<ContactSpread> mine,
+                                                      const ParticleBuckets& buckets) const;
 
   const BucketPartition& partition() const { return partition_; }
   const DomainTraffic& traffic() const { return traffic_; }

@@ -85,7 +85,10 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
   out.spring_energy.assign(nb, 0);
   out.friction_work.assign(nb, 0);
   out.touching.clear();
+  out.touching_spring.clear();
+  out.touching_friction.clear();
   std::vector<std::vector<uint32_t>> touching(chunks);
+  std::vector<std::vector<Real>> touching_spring(chunks), touching_friction(chunks);
   std::vector<Vec3> chunk_reaction(chunks * nb, Vec3::Zero());
   std::vector<Real> chunk_spring(chunks * nb, 0), chunk_friction(chunks * nb, 0);
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
@@ -121,14 +124,45 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
       chunk_spring[c * nb + size_t(k)] += f.spring_energy;
       chunk_friction[c * nb + size_t(k)] += f.friction_work;
       touching[c].push_back(uint32_t(p));
+      touching_spring[c].push_back(f.spring_energy);
+      touching_friction[c].push_back(f.friction_work);
     }
   });
   for (size_t c = 0; c < chunks; ++c) {
     out.touching.insert(out.touching.end(), touching[c].begin(), touching[c].end());
+    out.touching_spring.insert(out.touching_spring.end(), touching_spring[c].begin(), touching_spring[c].end());
+    out.touching_friction.insert(out.touching_friction.end(), touching_friction[c].begin(), touching_friction[c].end());
     for (size_t k = 0; k < nb; ++k) {
       out.reaction[k] += chunk_reaction[c * nb + k];
       out.spring_energy[k] += chunk_spring[c * nb + k];
       out.friction_work[k] += chunk_friction[c * nb + k];
+    }
+  }
+}
+
+void contact_sums_in_order(const std::vector<ContactSpread>& spreads, size_t nb, ContactForces& out) {
+  out.reaction.assign(nb, Vec3::Zero());
+  out.spring_energy.assign(nb, 0);
+  out.friction_work.assign(nb, 0);
+  // A chunk without touching points adds zeros (x + 0 = x): only the touched chunks count.
+  std::vector<Vec3> chunk_reaction(nb);
+  std::vector<Real> chunk_spring(nb), chunk_friction(nb);
+  for (size_t i = 0; i < spreads.size();) {
+    const uint64_t c = spreads[i].index / chunk;
+    std::fill(chunk_reaction.begin(), chunk_reaction.end(), Vec3::Zero());
+    std::fill(chunk_spring.begin(), chunk_spring.end(), Real(0));
+    std::fill(chunk_friction.begin(), chunk_friction.end(), Real(0));
+    for (; i < spreads.size() && spreads[i].index / chunk == c; ++i) {
+      const ContactSpread& s = spreads[i];
+      const auto k = size_t(s.body);
+      chunk_reaction[k] += Vec3(s.force[0], s.force[1], s.force[2]);
+      chunk_spring[k] += s.spring_energy;
+      chunk_friction[k] += s.friction_work;
+    }
+    for (size_t k = 0; k < nb; ++k) {
+      out.reaction[k] += chunk_reaction[k];
+      out.spring_energy[k] += chunk_spring[k];
+      out.friction_work[k] += chunk_friction[k];
     }
   }
 }

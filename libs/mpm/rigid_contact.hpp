@@ -17,6 +17,7 @@
 #pragma once
 #include <vector>
 
+#include "mpm/contact_spread.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/rigid_body.hpp"
 
@@ -75,6 +76,7 @@ struct ContactMaterial {
 struct ContactForces {
   std::vector<Vec3> force;
   std::vector<uint32_t> touching;
+  std::vector<Real> touching_spring, touching_friction;  // each touching point's terms, in its order
   std::vector<Vec3> reaction;
   std::vector<Real> spring_energy;
   std::vector<Real> friction_work;
@@ -86,6 +88,12 @@ struct ContactForces {
 void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& materials,
                              const std::vector<RigidBodySettings>& bodies,
                              const std::vector<RigidBodyState>& states, ContactForces& out);
+
+// reaction, spring_energy and friction_work of `out` as update_penalty_contacts adds them
+// (per chunk of points in order, then chunk by chunk) from every touching point's record,
+// the records in the one-process particle order (contact_spread.hpp): the one-process sums
+// on several processes.
+void contact_sums_in_order(const std::vector<ContactSpread>& spreads, size_t bodies, ContactForces& out);
 
 // The largest κ_p/m_p over the points that may touch a penalty body (1/s²): the square of
 // the highest frequency a penalty spring gives a point. Zero without penalty bodies.

@@ -174,10 +174,6 @@ void Simulation::check_body_speed(Real speed, const std::string& where, const st
 void Simulation::add_rigid_body(const RigidBodySettings& body) {
   const std::string where = "rigid_bodies." + body.name;
   if (state_.diagnostics.step > 0) throw InputError(where, "", "rigid bodies are added before the first step");
-  // Penalty contact adds its points' forces to the grid after the halo exchange, point by
-  // point in the one-process order (docs/cluster.md, "Not yet").
-  if (context_->domain.process_count() > 1 && body.coupling == RigidCoupling::penalty)
-    throw InputError(where, "contact", "penalty contact does not run on several MPI processes yet; run on one");
   for (const auto& b : rigid_bodies_)
     if (b.name == body.name) throw InputError(where, "", "is given twice");
   validate(body, "scene");

@@ -93,10 +93,22 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
       buffer.ddmp_alpha = c.ddmp_partition();
       copy_box_from_grid(b, c.columns[bi], c.tables[bi], s.grid, buffer);
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
+      buffer.grid = &s.grid;
       for (uint32_t p = b.begin; p < b.end; ++p) {
         const auto st = particle_stencil<Shape>(copy, p, h, buffer);
         Vec3 v = Vec3::Zero();
         Mat3 grad = Mat3::Zero();
+        if constexpr (Shape::uses_domain_vertices)
+          if (st.wide) {  // vertex by vertex from the grid (shape_cpdi.hpp)
+            const auto [aw, ax, ay, az] = interpolate_wide<true>(st, s.grid);
+            for (int r = 0; r < 3; ++r) {
+              v[r] = aw[lane::momentum + r];
+              grad(r, 0) = ax[lane::momentum + r], grad(r, 1) = ay[lane::momentum + r], grad(r, 2) = az[lane::momentum + r];
+            }
+            out.velocity[p] = v;
+            out.velocity_gradient[p] = grad;
+            continue;
+          }
         for (int i = 0; i < N; ++i)
           for (int j = 0; j < N; ++j)
             for (int k = 0; k < N; ++k) {

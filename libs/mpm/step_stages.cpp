@@ -135,12 +135,8 @@ void enable_penalty_contact(SolverState& s, StepContext& c) {
 }
 
 void update_contact_forces(SolverState& s, StepContext& c) {
+  // This process's points; on several processes add_contact_forces forms the sums.
   update_penalty_contacts(s.particles, c.contact_materials, c.rigid_bodies, s.diagnostics.rigid, c.contact);
-  for (size_t r = 0; r < c.contact.reaction.size(); ++r) {
-    c.contact.reaction[r] = c.domain.reduce_sum(c.contact.reaction[r]);
-    c.contact.spring_energy[r] = c.domain.reduce_sum(c.contact.spring_energy[r]);
-    c.contact.friction_work[r] = c.domain.reduce_sum(c.contact.friction_work[r]);
-  }
 }
 
 Real ddmp_small_mass(const SolverState& s, StepContext& c) {

@@ -13,6 +13,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -67,6 +68,7 @@ struct StepContext {
   std::vector<BucketColumns> columns;
   std::vector<BucketTally> tallies;
   std::vector<RunTally> run_tallies;
+  std::vector<std::vector<uint32_t>> cpdi_wide;  // CPDI1: per bucket, its wide points of the last scatter
   PassSums sums;
   Reactions reactions;              // of the node update, per point body
   DdmpNodalValues ddmp_nodal;       // DDMP: σ^d, L and small-mass shares per node (ddmp_grid.hpp)
@@ -139,6 +141,52 @@ Real stable_time_step(const SolverState& s, const StepContext& c);
 
 // --- The grid and the transfers -------------------------------------------------------
 
+// --- CPDI1 domains wider than a bucket's stencil box (shape_cpdi.hpp) ------------------
+
+// Adds the grid blocks of every wide domain's vertex nodes (one node of margin: in USF the
+// domain deforms between this and the force scatter) to `keys`.
+inline void add_wide_cpdi_blocks(const SolverState& s, const StepContext& c, std::vector<uint64_t>& keys) {
+  constexpr int bw = SparseGrid::block_width;
+  const Real h = c.settings.cell_size;
+  const Particles& ps = s.particles;
+  for (size_t p = 0; p < ps.size(); ++p) {
+    int lo[3], hi[3];
+    cpdi_vertex_cell_range(ps, p, h, lo, hi);
+    const auto cell = cell_of(ps.position[p], 1 / h);
+    bool wide = false;
+    for (int a = 0; a < 3; ++a) wide = wide || lo[a] < cell[a] - 1 || hi[a] > cell[a] + 1;
+    if (!wide) continue;  // (a non-finite vertex is left to its stencil, which reports it)
+    for (int i = floor_div(lo[0] - 1, bw); i <= floor_div(hi[0] + 2, bw); ++i)
+      for (int j = floor_div(lo[1] - 1, bw); j <= floor_div(hi[1] + 2, bw); ++j)
+        for (int k = floor_div(lo[2] - 1, bw); k <= floor_div(hi[2] + 2, bw); ++k)
+          keys.push_back(SparseGrid::block_key(i, j, k));
+  }
+}
+
+// After the buckets: the wide points' lanes onto the grid, vertex by vertex (Eq. 7), in
+// bucket and particle order (the same sums for any thread count).
+template <class Mode>
+void scatter_wide_cpdi_points(SolverState& s, StepContext& c) {
+  const Real h = c.settings.cell_size;
+  for (const auto& points : c.cpdi_wide)
+    for (uint32_t p : points) {
+      if (c.domain.process_count() > 1)
+        throw NumericalError("CPDI domain of point " + std::to_string(s.particles.id[p]) +
+                             " reaches more than one cell from its centre, which runs on one process only");
+      const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
+      const ScatterLanes l = scatter_lanes<Mode>(s.particles, p);
+      for_each_cpdi_vertex_node(st, [&](int i, int j, int k, Real w, Real gx, Real gy, Real gz) {
+        Real* node = s.grid.node(i, j, k);
+        if (!node)
+          throw NumericalError("CPDI domain of point " + std::to_string(s.particles.id[p]) +
+                               " reaches a grid node outside the active grid");
+        NodeLanes add = w * l.a;
+        if constexpr (Mode::force) add += gx * l.fx + gy * l.fy + gz * l.fz;
+        store_lanes(node, load_lanes(node) + add);
+      });
+    }
+}
+
 template <class Shape>
 void prepare_grid(SolverState& s, StepContext& c) {
   // A sort on any process is a sort on all: the buckets stay those of one process.
@@ -167,6 +215,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
   tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
     c.columns[bi] = stencil_columns<Shape::reach_below, Shape::reach_above>(c.columns[bi]);
   });
+  if constexpr (Shape::uses_domain_vertices) add_wide_cpdi_blocks(s, c, keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   s.grid.set_active_blocks(keys);
@@ -188,6 +237,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
   s.grid_holds_velocity = false;
   c.tallies.assign(list.size(), BucketTally{});
   c.run_tallies.assign(s.buckets.runs().size(), RunTally{});
+  if constexpr (Shape::uses_domain_vertices) c.cpdi_wide.resize(list.size());
 }
 
 template <class Shape, class Mode>
@@ -213,12 +263,14 @@ void scatter(SolverState& s, StepContext& c) {
         if constexpr (nodal_stress) clear_ddmp_box(b, c.tables[colour[k]], buffer);
         scatter_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(),
                                     c.settings.cell_size, buffer);
+        if constexpr (Shape::uses_domain_vertices) c.cpdi_wide[colour[k]].swap(buffer.wide_points);
         add_box_to_grid(b, c.columns[colour[k]], c.tables[colour[k]], s.grid, buffer);
         if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.tables[colour[k]], buffer, c.ddmp_nodal);
       }
     });
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
   }
+  if constexpr (Shape::uses_domain_vertices) scatter_wide_cpdi_points<Mode>(s, c);
   if constexpr (nodal_stress) {  // Paper A Eq. 4: the smoothed part of the force on the grid
     add_ddmp_smoothed_force(s.grid, c.ddmp_nodal, c.settings.cell_size);
   }
@@ -236,6 +288,7 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
   if constexpr (Shape::smoothed_on_grid) alpha_cache = ddmp_alpha_of_step(c.ddmp_nodal);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, list.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
     BucketBuffer& buffer = c.buffers.local();
+    buffer.grid = &s.grid;  // wide CPDI1 stencils read their nodes from it
     for (size_t bi = r.begin(); bi < r.end(); ++bi) {
       const Bucket& b = list[bi];
       if (c.active_field >= 0 && !bucket_has_field(b, s.buckets.runs(), s.particles, c.active_field)) continue;
@@ -286,37 +339,70 @@ void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
 // material point instead, the force reached nodes that hold little of a CPDI point's mass,
 // whose kicks put twice the contact's work into the grid: +3 % in the SHPB's energy
 // balance, docs/paper-b.md.)
+// Point p's spreading weights as a record: its force, its terms, the weights S_ip of the
+// nodes base + (i, j, k) (zero: not touched).
+template <class Shape>
+ContactSpread contact_spread(const SolverState& s, const StepContext& c, size_t t, Real h) {
+  const uint32_t p = c.contact.touching[t];
+  ContactSpread out;
+  out.index = p;
+  out.body = s.particles.contact_body[p];
+  for (int a = 0; a < 3; ++a) out.force[a] = c.contact.force[p][a];
+  out.spring_energy = c.contact.touching_spring[t];
+  out.friction_work = c.contact.touching_friction[t];
+  if constexpr (Shape::uses_domain_vertices) {
+    constexpr int N = CpdiBoxStencil::n;
+    static_assert(N <= ContactSpread::max_nodes_per_axis);
+    const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
+    if (st.wide) return out;  // nodes = 0: spread vertex by vertex (add_contact_forces)
+    out.nodes = N;
+    for (int a = 0; a < 3; ++a) out.base[a] = st.base[a];
+    for (int i = 0; i < N * N * N; ++i) out.weight[i] = st.w[i];
+  } else {
+    using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
+    constexpr int N = Weights::nodes_per_axis;
+    static_assert(N <= ContactSpread::max_nodes_per_axis);
+    const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
+    out.nodes = N;
+    for (int a = 0; a < 3; ++a) out.base[a] = st.base[a];
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k) out.weight[(i * N + j) * N + k] = st.w[i][0] * st.w[j][1] * st.w[k][2];
+  }
+  return out;
+}
+
 template <class Shape>
 void add_contact_forces(SolverState& s, StepContext& c) {
   if (!c.penalty_contact) return;
   update_contact_forces(s, c);
   const Real h = c.settings.cell_size;
-  // Active: the point's own scatter stencil reaches these nodes.
-  auto add = [&](int i, int j, int k, Real w, const Vec3& f) {
-    Real* lanes = s.grid.node(i, j, k);
-    for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * f[a];
-  };
-  if constexpr (Shape::uses_domain_vertices) {
-    constexpr int N = CpdiBoxStencil::n;
-    for (uint32_t p : c.contact.touching) {
-      const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, p, h);
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-          for (int k = 0; k < N; ++k)
-            if (const Real w = st.w[CpdiBoxStencil::index(i, j, k)]; w > 0)
-              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
-    }
-  } else {
-    using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
-    constexpr int N = Weights::nodes_per_axis;
-    for (uint32_t p : c.contact.touching) {
-      const auto st = make_stencil<Weights>(s.particles.position[p], stencil_half_size<Weights>(s.particles, p, h), 1 / h);
-      for (int i = 0; i < N; ++i)
-        for (int j = 0; j < N; ++j)
-          for (int k = 0; k < N; ++k)
-            if (const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2]; w > 0)
-              add(st.base[0] + i, st.base[1] + j, st.base[2] + k, w, c.contact.force[p]);
-    }
+  std::vector<ContactSpread> spreads(c.contact.touching.size());
+  for (size_t t = 0; t < spreads.size(); ++t) spreads[t] = contact_spread<Shape>(s, c, t, h);
+  // Several processes: every touching point's record, in the one-process order; each
+  // process adds them to the nodes it holds (whole after the scatter's halo exchange) and
+  // forms the reaction sums in that order (contact_spread.hpp).
+  if (c.domain.process_count() > 1) {
+    spreads = c.domain.contact_spreads_in_order(std::move(spreads), s.buckets);
+    contact_sums_in_order(spreads, c.rigid_bodies.size(), c.contact);
+  }
+  for (const ContactSpread& sp : spreads) {
+    if constexpr (Shape::uses_domain_vertices)
+      if (sp.nodes == 0) {  // a wide CPDI1 domain (one process only): its vertices' own cells
+        const CpdiBoxStencil st = make_cpdi_box_stencil(s.particles, uint32_t(sp.index), h);
+        for_each_cpdi_vertex_node(st, [&](int i, int j, int k, Real w, Real, Real, Real) {
+          if (w > 0)
+            for (int a = 0; a < 3; ++a) s.grid.node(i, j, k)[lane::force + a] += w * sp.force[a];
+        });
+        continue;
+      }
+    const int N = sp.nodes;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k)
+          if (const Real w = sp.weight[(i * N + j) * N + k]; w > 0)
+            if (Real* lanes = s.grid.node(sp.base[0] + i, sp.base[1] + j, sp.base[2] + k))  // held here
+              for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * sp.force[a];
   }
 }
 

@@ -138,6 +138,7 @@ template <class Mode>
 template <class Shape, class Mode>
 void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                     const BodyInfo* bodies, Real h, BucketBuffer& buffer) {
+  buffer.wide_points.clear();
   constexpr int N = Shape::nodes_per_axis;
   constexpr int L = lane::count;
   for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
@@ -155,6 +156,10 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         const auto& st = stencils[p - p0];
         Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
         if constexpr (Shape::uses_domain_vertices) {  // deformable points only (cpdi_particles.hpp)
+          if (st.wide) {  // past the buffer: scattered onto the grid after the buckets (step_stages.hpp)
+            buffer.wide_points.push_back(p);
+            continue;
+          }
           const ScatterLanes l = scatter_lanes<Mode>(ps, p);
           scatter_cpdi<Mode::force, BucketBuffer::stride_i, BucketBuffer::stride_j>(st, first, l.a, l.fx, l.fy, l.fz);
         } else {
@@ -298,9 +303,31 @@ template <bool Gradient>
   return out;
 }
 
-// CPDI1 (shape_cpdi.hpp): the dense box, node by node.
+// A wide CPDI1 stencil: vertex by vertex, from the grid's nodes.
+template <bool Gradient>
+Interpolation interpolate_wide(const CpdiBoxStencil& st, const SparseGrid& grid) {
+  Interpolation out{};
+  for_each_cpdi_vertex_node(st, [&](int i, int j, int k, Real w, Real gx, Real gy, Real gz) {
+    const Real* lanes = grid.node(i, j, k);
+    if (!lanes) throw NumericalError("a CPDI domain reaches a grid node outside the active grid");
+    const NodeLanes node = load_lanes(lanes);
+    out.aw += w * node;
+    if constexpr (Gradient) {
+      out.ax += gx * node;
+      out.ay += gy * node;
+      out.az += gz * node;
+    }
+  });
+  return out;
+}
+
+// CPDI1 (shape_cpdi.hpp): the dense box, node by node; a wide stencil from the grid.
 template <bool Gradient>
 [[gnu::always_inline]] inline Interpolation interpolate(const CpdiBoxStencil& st, const BucketBuffer& buffer) {
+  if (st.wide) {
+    if (!buffer.grid) throw NumericalError("internal: a wide CPDI stencil in a gather without the grid");
+    return interpolate_wide<Gradient>(st, *buffer.grid);
+  }
   constexpr int n = CpdiBoxStencil::n;
   const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);
   Interpolation out{};
