@@ -14,6 +14,15 @@
 //   energy_error_over_work  the solver's own balance at the last row, signed: the series'
 //                         energy_error (every energy it books, docs/scene.md) over W; positive
 //                         when the scheme made energy. NaN when W is 0
+//   impact_energy_error   impact runs (series with flyer_kinetic_energy): the whole system's
+//                         balance, the flyer's kinetic + potential energy and the material's
+//                         kinetic + strain + dissipated energies (the series' energy_error,
+//                         docs/scene.md), over the energy at the start (the impact energy), at
+//                         the last row, signed; and impact_energy_error_worst, the largest
+//                         |energy_error| over the run over the same. energy_balance_error above
+//                         is the material's balance against the flyer's work on it: in an
+//                         impact that work falls back towards 0 as the flyer rebounds, so it
+//                         is no measure of how well the impact's energy closes
 // Each is NaN where the series lacks the columns it needs.
 #pragma once
 #include <limits>
@@ -28,6 +37,7 @@ struct RunChecks {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double energy_balance_error = none, balance_5pct_strain = none, ke_over_se = none;
   double load_ripple = none, final_load = none, energy_error_over_work = none, energy_secant_stiffness = none;
+  double impact_energy_error = none, impact_energy_error_worst = none;
 };
 
 RunChecks run_checks(const RunAnalysis& run);
