@@ -78,9 +78,19 @@ inline void for_each_cpdi_vertex_node(const CpdiBoxStencil& st, Fn&& fn) {
     }
 }
 
+// Vertex v of particle p's domain convected by F, in grid coordinates (cells of 1/inv_h).
+inline Vec3 cpdi_vertex_in_cells(const Vec3& x, const Mat3& F, const CpdiParticleDomain& d, int v, Real inv_h) {
+  return (x + F * d.col(v).head<3>()) * inv_h;
+}
+
+// A vertex in cell `vertex_cell` lies outside the 4-node box of a point in `point_cell`
+// (along one axis): the domain is "wide" and is scattered vertex by vertex on the grid.
+inline bool cpdi_vertex_outside_box(int vertex_cell, int point_cell) {
+  return vertex_cell < point_cell - 1 || vertex_cell > point_cell + CpdiBoxStencil::n - 3;
+}
+
 // Eq. 7 for particle p at its current position and F, on a grid of spacing h (m).
 inline CpdiBoxStencil make_cpdi_box_stencil(const Particles& ps, size_t p, Real h) {
-  constexpr int n = CpdiBoxStencil::n;
   const Real inv_h = 1 / h;
   const Vec3& x = ps.position[p];
   const Mat3 F = ps.deformation[p].cast<Real>();
@@ -91,7 +101,7 @@ inline CpdiBoxStencil make_cpdi_box_stencil(const Particles& ps, size_t p, Real 
   std::fill(std::begin(st.w), std::end(st.w), Real(0));
   for (auto& c : st.g) std::fill(std::begin(c), std::end(c), Real(0));
   for (int v = 0; v < 8; ++v) {
-    const Vec3 xi = (x + F * d.col(v).head<3>()) * inv_h;
+    const Vec3 xi = cpdi_vertex_in_cells(x, F, d, v, inv_h);
     const Vec3 grad = inverse_transpose * d.col(v).tail<3>();
     CpdiVertexTent& t = st.vertex[v];
     t.weight = d(3, v);
@@ -102,8 +112,7 @@ inline CpdiBoxStencil make_cpdi_box_stencil(const Particles& ps, size_t p, Real 
       t.cell[a] = int(cell);
       t.frac[a] = xi[a] - cell;
       t.grad[a] = grad[a];
-      const int local = t.cell[a] - st.base[a];
-      if (!(local >= 0 && local <= n - 2)) st.wide = true;
+      if (cpdi_vertex_outside_box(t.cell[a], st.base[a] + 1)) st.wide = true;
     }
   }
   if (st.wide) return st;  // the vertex tents only (for_each_cpdi_vertex_node)
@@ -124,7 +133,7 @@ inline void cpdi_vertex_cell_range(const Particles& ps, size_t p, Real h, int lo
   const Real inv_h = 1 / h;
   for (int a = 0; a < 3; ++a) lo[a] = std::numeric_limits<int>::max(), hi[a] = std::numeric_limits<int>::min();
   for (int v = 0; v < 8; ++v) {
-    const Vec3 xi = (x + F * d.col(v).head<3>()) * inv_h;
+    const Vec3 xi = cpdi_vertex_in_cells(x, F, d, v, inv_h);
     for (int a = 0; a < 3; ++a) {
       if (!(std::abs(xi[a]) < Real(1 << 30))) continue;  // a non-finite vertex: the stencil reports it
       const int cell = int(std::floor(xi[a]));

@@ -157,7 +157,7 @@ inline void add_wide_cpdi_blocks(const SolverState& s, const StepContext& c, std
     cpdi_vertex_cell_range(ps, p, h, lo, hi);
     const auto cell = cell_of(ps.position[p], 1 / h);
     bool wide = false;
-    for (int a = 0; a < 3; ++a) wide = wide || lo[a] < cell[a] - 1 || hi[a] > cell[a] + 1;
+    for (int a = 0; a < 3; ++a) wide = wide || cpdi_vertex_outside_box(lo[a], cell[a]) || cpdi_vertex_outside_box(hi[a], cell[a]);
     if (!wide) continue;  // (a non-finite vertex is left to its stencil, which reports it)
     // A domain stretched over many cells is a run-away F, not a CPDI1 domain (paper B's
     // coarsest B1 spans 2.5 cells): stop before its bounding box activates a huge grid.
@@ -422,12 +422,15 @@ void add_contact_forces(SolverState& s, StepContext& c) {
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j)
         for (int k = 0; k < N; ++k)
-          if (const Real w = sp.weight[(i * N + j) * N + k]; w > 0)
-            if (Real* lanes = s.grid.node(sp.base[0] + i, sp.base[1] + j, sp.base[2] + k))  // held here
+          if (const Real w = sp.weight[(i * N + j) * N + k]; w > 0) {
+            Real* lanes = s.grid.node(sp.base[0] + i, sp.base[1] + j, sp.base[2] + k);
+            if (lanes) {  // held here
               for (int a = 0; a < 3; ++a) lanes[lane::force + a] += w * sp.force[a];
-            else if (c.domain.process_count() == 1)  // one process holds every node its points reach
+            } else if (c.domain.process_count() == 1) {  // one process holds every node its points reach
               throw NumericalError("the contact force of point " + std::to_string(s.particles.id[sp.index]) +
                                    " reaches a grid node outside the active grid");
+            }
+          }
   }
 }
 
