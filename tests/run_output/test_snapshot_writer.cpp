@@ -114,3 +114,40 @@ TEST_CASE("A new run in the same directory starts from no snapshots", "[run_outp
   CHECK_FALSE(fs::exists(second.xdmf_path()));
   CHECK(fs::exists(dir + "/snapshots/notes.txt"));
 }
+
+TEST_CASE("A snapshot whose points are written in blocks equals the one written whole", "[run_output]") {
+  // As several MPI processes write one: the file laid out for all points, each block of
+  // points written into it afterwards (here both blocks by this process).
+  const ParticleSnapshot whole = make_snapshot(7, 20, 1e-3);
+  auto block = [&](size_t first, size_t count) {
+    ParticleSnapshot b = make_snapshot(count, 20, 1e-3);
+    for (size_t i = 0; i < count; ++i) {
+      std::copy_n(&whole.position[3 * (first + i)], 3, &b.position[3 * i]);
+      std::copy_n(&whole.velocity[3 * (first + i)], 3, &b.velocity[3 * i]);
+      std::copy_n(&whole.stress[6 * (first + i)], 6, &b.stress[6 * i]);
+      b.von_mises[i] = whole.von_mises[first + i], b.jacobian[i] = whole.jacobian[first + i], b.body[i] = whole.body[first + i];
+    }
+    return b;
+  };
+  const ParticleSnapshot first = block(0, 3), second = block(3, 4);
+  const Provenance provenance{"latmpm-solve", "0", "cmd", {}, "t", {}};
+  SnapshotWriter one(fresh_run_dir("whole"), provenance), parts(fresh_run_dir("blocks"), provenance);
+  const ParticleSnapshot back_whole = read_snapshot(one.write(whole));
+  const std::string path = parts.write_shared(first, 7, [&](const std::string& staged) {
+    Hdf5File file(staged, Hdf5File::Mode::read_write);
+    write_snapshot_rows(file, first, 0);
+    write_snapshot_rows(file, second, 3);
+    file.close();
+  });
+  const ParticleSnapshot back = read_snapshot(path);
+  CHECK(back.position == back_whole.position);
+  CHECK(back.velocity == back_whole.velocity);
+  CHECK(back.stress == back_whole.stress);
+  CHECK(back.von_mises == back_whole.von_mises);
+  CHECK(back.jacobian == back_whole.jacobian);
+  CHECK(back.body == back_whole.body);
+  CHECK(back.body_names == back_whole.body_names);
+  CHECK(back.step == 20);
+  REQUIRE(parts.frames().size() == 1);
+  CHECK(parts.frames()[0].points == 7);  // the series index counts every process's points
+}
