@@ -88,13 +88,6 @@ void unpack_particle(Particles& ps, const char*& in, const FieldMask& present) {
   });
 }
 
-std::vector<char> packed(const Particles& ps, const FieldMask& present) {
-  std::vector<char> out(ps.size() * particle_bytes(ps, present));
-  char* at = out.data();
-  for (size_t p = 0; p < ps.size(); ++p) pack_particle(ps, p, at, present);
-  return out;
-}
-
 // Keeps the particles whose keep[p] is set, in their order.
 void keep_particles(Particles& ps, const std::vector<uint8_t>& keep) {
   for_each_particle_field(ps, [&](const ParticleField& f, auto& v, const auto&) {

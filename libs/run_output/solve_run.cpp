@@ -219,7 +219,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     }
     // One file, every process writing its block of the points (in id order) into it at once.
     size_t first = 0;
-    const ParticleSnapshot block = solver_snapshot(s, s.domain().particles_in_id_block(s.particles(), particles, first), first);
+    const mpm::Particles mine = s.domain().particles_in_id_block(s.particles(), particles, first);
+    const ParticleSnapshot block = solver_snapshot(s, mine, first);
     auto fill_rows = [&](const std::string& path) {
       s.domain().write_shared_rows(path, [&](Hdf5File& file) { write_snapshot_rows(file, block, first); });
     };

@@ -43,6 +43,17 @@ ParticleSnapshot make_snapshot(size_t n, int64_t step, double time) {
   return s;
 }
 
+// Every per-point array and the body names equal.
+void check_same_points(const ParticleSnapshot& back, const ParticleSnapshot& s) {
+  CHECK(back.position == s.position);
+  CHECK(back.velocity == s.velocity);
+  CHECK(back.stress == s.stress);
+  CHECK(back.von_mises == s.von_mises);
+  CHECK(back.jacobian == s.jacobian);
+  CHECK(back.body == s.body);
+  CHECK(back.body_names == s.body_names);
+}
+
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
   std::stringstream ss;
@@ -59,13 +70,7 @@ TEST_CASE("A snapshot reads back as written, with provenance", "[run_output]") {
   const std::string path = writer.write(s);
   CHECK(path == dir + "/snapshots/snap_000040.h5");
   ParticleSnapshot back = read_snapshot(path);
-  CHECK(back.position == s.position);
-  CHECK(back.velocity == s.velocity);
-  CHECK(back.stress == s.stress);
-  CHECK(back.von_mises == s.von_mises);
-  CHECK(back.jacobian == s.jacobian);
-  CHECK(back.body == s.body);
-  CHECK(back.body_names == s.body_names);
+  check_same_points(back, s);
   CHECK(back.step == 40);
   CHECK(back.time == 2.5e-3);
   CHECK(read_provenance(Hdf5File(path, Hdf5File::Mode::read)).tool == "latmpm-solve");
@@ -140,13 +145,7 @@ TEST_CASE("A snapshot whose points are written in blocks equals the one written 
     file.close();
   });
   const ParticleSnapshot back = read_snapshot(path);
-  CHECK(back.position == back_whole.position);
-  CHECK(back.velocity == back_whole.velocity);
-  CHECK(back.stress == back_whole.stress);
-  CHECK(back.von_mises == back_whole.von_mises);
-  CHECK(back.jacobian == back_whole.jacobian);
-  CHECK(back.body == back_whole.body);
-  CHECK(back.body_names == back_whole.body_names);
+  check_same_points(back, back_whole);
   CHECK(back.step == 20);
   REQUIRE(parts.frames().size() == 1);
   CHECK(parts.frames()[0].points == 7);  // the series index counts every process's points
