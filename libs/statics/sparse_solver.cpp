@@ -126,7 +126,8 @@ bool SparseSolver::solve_preconditioned(const SparseMatrix& K, const Vector& b, 
   s.factor_cg.compute(K);
   x = s.factor_cg.solve(b);
   stats.iterations = int(s.factor_cg.iterations());
-  stats.relative_residual = s.factor_cg.error();
+  const Real norm_b = b.norm();  // the true residual, not CG's recurrence
+  stats.relative_residual = norm_b > 0 ? (K * x - b).norm() / norm_b : Real(0);
   return s.factor_cg.info() == Eigen::Success && x.allFinite();
 }
 
