@@ -86,6 +86,17 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       r = solve_equilibrium(problem, conditions, trial, solver, newton);
       r.iterations += spent;
     }
+    if (!r.converged && newton.krylov_iterations > 0) {
+      // Krylov steps take other (inexact) directions: where they fail, the increment is
+      // solved again by factorising Newton, so that they never end a path it would continue.
+      const int spent = r.iterations;
+      NewtonOptions factorising = newton;
+      factorising.krylov_iterations = 0;
+      trial = state;
+      r = solve_equilibrium(problem, conditions, trial, solver, factorising);
+      r.iterations += spent;
+      point.predicted = false;
+    }
     if (!r.converged) {
       failure = r.failure;
       return false;

@@ -90,14 +90,17 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       Real shift = options.shift;
       for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
       // A Krylov step: CG preconditioned by the factor the solver holds. A true-tangent
-      // direction is kept only where it descends (the matrix may be indefinite).
+      // direction is kept only where it descends; a direction of non-positive curvature
+      // proves the true tangent indefinite, as a failed factorisation does.
       if (options.krylov_iterations > 0 && solver.has_factor()) {
         const Real forcing =
             boundary_moves ? options.krylov_forcing
                            : std::clamp(Real(0.1) * residual, Real(1e-12), options.krylov_forcing);
         Vector dk;
-        if (solver.solve_preconditioned(H, rhs, forcing, options.krylov_iterations, dk, stats) &&
-            (projected || g.dot(free_part(dk, fixed)) < 0)) {
+        const KrylovResult kr = solver.solve_preconditioned(H, rhs, forcing, options.krylov_iterations, dk);
+        stats.iterations = kr.iterations;
+        stats.relative_residual = kr.relative_residual;
+        if (kr.outcome == KrylovOutcome::solved && (projected || g.dot(free_part(dk, fixed)) < 0)) {
           d = std::move(dk);
           if (!projected) ++report.true_tangent_steps;
           ++report.krylov_steps;
@@ -105,7 +108,11 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
           krylov_solved = true;
           break;
         }
-        report.linear_iterations += stats.iterations;  // spent before the factorisation
+        report.linear_iterations += kr.iterations;  // spent before the factorisation
+        if (kr.outcome == KrylovOutcome::negative_curvature && !projected) {
+          true_tangent_failed_at = residual;
+          continue;  // to the projected Hessian, without factorising the indefinite one
+        }
       }
       for (;;) {
         factorized = solver.factorize(H);

@@ -12,7 +12,6 @@
 #include "core/number_text.hpp"
 #include "mpm/name_table.hpp"
 #include "statics/cholmod_direct.hpp"
-#include "statics/factor_preconditioner.hpp"
 #include "statics/hypre_amg.hpp"
 
 namespace latmpm::statics {
@@ -36,7 +35,6 @@ LinearSolverKind parse_linear_solver(const std::string& name, const std::string&
 struct SparseSolver::Impl {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<Real>> cg;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, FactorPreconditioner> factor_cg;
   CholmodDirect cholmod;
   std::unique_ptr<HypreAmg> amg;  // made on first use: it initialises MPI
   std::vector<Vec3> node_positions;
@@ -112,23 +110,15 @@ bool SparseSolver::factorize_matrix(const SparseMatrix& K) {
   return false;
 }
 
-bool SparseSolver::solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance, int max_iterations,
-                                        Vector& x, LinearSolveStats& stats) {
-  if (!factor_valid_) return false;
-  Impl& s = *impl_;
+KrylovResult SparseSolver::solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance,
+                                                int max_iterations, Vector& x) {
+  if (!factor_valid_) return {};
   PhaseTimer timer(times_.krylov);
-  s.factor_cg.preconditioner().set([this](const Vector& r) {
-    Impl& t = *impl_;
-    return used_ == LinearSolverKind::ldlt ? Vector(t.ldlt.solve(r)) : t.cholmod.solve(r);
-  });
-  s.factor_cg.setTolerance(tolerance);
-  s.factor_cg.setMaxIterations(max_iterations);
-  s.factor_cg.compute(K);
-  x = s.factor_cg.solve(b);
-  stats.iterations = int(s.factor_cg.iterations());
-  const Real norm_b = b.norm();  // the true residual, not CG's recurrence
-  stats.relative_residual = norm_b > 0 ? (K * x - b).norm() / norm_b : Real(0);
-  return s.factor_cg.info() == Eigen::Success && x.allFinite();
+  Impl& s = *impl_;
+  auto apply_inverse = [&](const Vector& r) {
+    return used_ == LinearSolverKind::ldlt ? Vector(s.ldlt.solve(r)) : s.cholmod.solve(r);
+  };
+  return preconditioned_cg(K, b, apply_inverse, tolerance, max_iterations, x);
 }
 
 std::string SparseSolver::describe() const {

@@ -14,6 +14,7 @@
 
 #include "statics/band_matrix.hpp"
 #include "statics/phase_time.hpp"
+#include "statics/preconditioned_cg.hpp"
 #include "statics/static_problem.hpp"
 #include "statics/static_settings.hpp"  // LinearSolverKind
 
@@ -64,10 +65,11 @@ class SparseSolver {
   // definite matrix) can precondition solve_preconditioned.
   bool has_factor() const { return factor_valid_; }
   // Solves K x = b by conjugate gradients preconditioned with the last factor (of an
-  // earlier, nearby matrix; factor_preconditioner.hpp) to ‖K x − b‖ ≤ tolerance ‖b‖. False
-  // (x unusable) when there is no factor or CG does not get there in max_iterations.
-  bool solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance, int max_iterations, Vector& x,
-                            LinearSolveStats& stats);
+  // earlier, nearby matrix; preconditioned_cg.hpp) to ‖K x − b‖ ≤ tolerance ‖b‖: solved, not
+  // converged within max_iterations (or no factor held), or a direction of non-positive
+  // curvature found (K is not positive definite).
+  KrylovResult solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance, int max_iterations,
+                                    Vector& x);
 
  private:
   struct Impl;

@@ -22,8 +22,7 @@ TEST_CASE("CG preconditioned by an earlier factor solves a nearby matrix to its 
   SparseSolver solver(LinearSolverKind::cholmod);
   const Vector b = Vector::LinSpaced(K0.rows(), -1, 2);
   Vector x;
-  LinearSolveStats stats;
-  CHECK_FALSE(solver.solve_preconditioned(K0, b, 1e-10, 50, x, stats));  // no factor yet
+  CHECK(solver.solve_preconditioned(K0, b, 1e-10, 50, x).outcome == KrylovOutcome::not_converged);  // no factor yet
   REQUIRE(solver.factorize(K0));
   CHECK(solver.has_factor());
   // The tangent of a uniformly compressed state: another matrix, close to K0.
@@ -34,13 +33,18 @@ TEST_CASE("CG preconditioned by an earlier factor solves a nearby matrix to its 
   SparseMatrix K1 = problem.hessian();
   for (Eigen::Index i = 0; i < K1.rows(); ++i) K1.coeffRef(i, i) += 1e-2 * mean_diagonal(K1);
   REQUIRE((K1 - K0).norm() > 1e-3 * K0.norm());
-  REQUIRE(solver.solve_preconditioned(K1, b, 1e-10, 50, x, stats));
+  const KrylovResult r = solver.solve_preconditioned(K1, b, 1e-10, 50, x);
+  REQUIRE(r.outcome == KrylovOutcome::solved);
   CHECK((K1 * x - b).norm() <= 1e-10 * b.norm());
-  CHECK(stats.relative_residual == Approx((K1 * x - b).norm() / b.norm()));
-  CHECK(stats.iterations > 1);
-  CHECK(stats.iterations < 50);
+  CHECK(r.relative_residual == Approx((K1 * x - b).norm() / b.norm()));
+  CHECK(r.iterations > 1);
+  CHECK(r.iterations < 50);
   // Too few iterations: refused, not a half-solved answer.
-  CHECK_FALSE(solver.solve_preconditioned(K1, b, 1e-14, 1, x, stats));
+  CHECK(solver.solve_preconditioned(K1, b, 1e-14, 1, x).outcome == KrylovOutcome::not_converged);
+  // An indefinite matrix (one negative pivot direction along b): non-positive curvature.
+  SparseMatrix K2 = K1;
+  for (Eigen::Index i = 0; i < K2.rows(); ++i) K2.coeffRef(i, i) -= 10 * K1.coeffRef(i, i);
+  CHECK(solver.solve_preconditioned(K2, b, 1e-10, 50, x).outcome == KrylovOutcome::negative_curvature);
 }
 
 TEST_CASE("Krylov steps follow the factorising path with fewer factorisations", "[statics]") {
