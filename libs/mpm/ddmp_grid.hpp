@@ -34,14 +34,15 @@ struct DdmpDistribution;
 //   after P2G: M_j = Σ_p (1 − α_p) S_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy;
 //   while small-mass nodes are handed on: the lanes being moved or read back;
 //   before G2P: L_j, row-major (9 values).
-// `coefficients`: 4 per node, (c₀, c) of the distribution coefficients of a small-mass node
-// that hands on its lanes (find_ddmp_small_mass_nodes), zero for the others.
+// Small-mass nodes (find_ddmp_small_mass_nodes): per block a 64-bit mask of the nodes that
+// hand on their lanes (bit n = node n), and per such node its distribution.
 struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
   std::vector<Real> values;
-  std::vector<Real> coefficients;
   std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
-  std::vector<uint8_t> block_has_small;  // per block: some node hands on
+  std::vector<uint64_t> handing;                       // per block: the nodes that hand on
+  std::vector<uint64_t> sizeable_mask, mass_mask;      // per block: nodes with mass ≥ the small mass, > 0
+  std::array<std::vector<uint32_t>, 27> handing_by_colour;  // blocks with nodes handing on, by coordinates mod 3
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
   std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
 
@@ -166,10 +167,12 @@ void pass_along(const Real (&in)[NA + 2 * (Axis == 0)][NB + 2 * (Axis == 1)][NC 
 inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const size_t blocks = grid.block_count();
-  nv.values.assign(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));
-  nv.coefficients.assign(blocks * SparseGrid::nodes_per_block * 4, Real(0));
-  nv.distributions.assign(blocks * SparseGrid::nodes_per_block, nullptr);
-  nv.block_has_small.assign(blocks, 0);
+  // Every pass writes the values before it reads them (the stress scatter clears them);
+  // distributions are read only where `handing` says so.
+  nv.values.resize(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count);
+  nv.distributions.resize(blocks * SparseGrid::nodes_per_block);
+  nv.handing.assign(blocks, 0);
+  for (auto& list : nv.handing_by_colour) list.clear();
   nv.neighbours.resize(blocks);
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);

@@ -22,8 +22,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <type_traits>
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
@@ -33,28 +35,14 @@ namespace latmpm::mpm {
 namespace ddmp_grid_detail {
 constexpr int reach = 2;  // the neighbourhood of a small-mass node: offsets −2 … 2 per axis
 
-// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
-inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
-  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
-}
-inline Real* coefficients_of(DdmpNodalValues& nv, size_t b, int n) {
-  return nv.coefficients.data() + (b * SparseGrid::nodes_per_block + size_t(n)) * 4;
-}
-
-template <int Components>
-using WideHalo = BlockHalo<reach, Components>;
-
-// Whether block b or one of its neighbours holds a node that hands on (most blocks: none).
-inline bool near_small_mass(const DdmpNodalValues& nv, size_t b) {
-  for (int nb : nv.neighbours[b])
-    if (nb >= 0 && nv.block_has_small[size_t(nb)]) return true;
-  return false;
-}
 // w(d) = 2^(−|d|₁) of an offset d within reach.
 inline Real offset_weight(int x, int y, int z) {
   static constexpr Real w[3 * reach + 1] = {1, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625};
   return w[std::abs(x) + std::abs(y) + std::abs(z)];
 }
+// Bit of offset d in a node's 5×5×5 neighbourhood: (x + 2)·25 + (y + 2)·5 + z + 2.
+constexpr int box_bit(int x, int y, int z) { return (x + reach) * 25 + (y + reach) * 5 + (z + reach); }
+constexpr int own_mass_bit = box_bit(0, 0, 0);
 // The 124 offsets d ≠ 0 within two cells per axis: a node one cell outside a flat face sees
 // two layers of the material along the normal (a linear fit), and every node next to a
 // particle's cell sees sizeable nodes even where a particle has just entered a new cell.
@@ -77,17 +65,20 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
   }();
   return list;
 }
-// The pattern of a small-mass node's neighbourhood: bit o set when the neighbour at
-// neighbour_offsets()[o] is sizeable (o < 124), bit 127 when the node holds mass of its
-// own. Its distribution coefficients are a function of this alone (fit_distribution).
+// The pattern of a small-mass node's neighbourhood: bit box_bit(d) set when the neighbour at
+// offset d is sizeable, bit own_mass_bit when the node holds mass of its own. Its
+// distribution coefficients are a function of this alone (fit_distribution).
+__extension__ typedef unsigned __int128 PatternBits;  // 125 bits (GCC and Clang)
 struct NeighbourPattern {
-  uint64_t bits[2] = {0, 0};
-  bool operator==(const NeighbourPattern& o) const { return bits[0] == o.bits[0] && bits[1] == o.bits[1]; }
-  bool sizeable(int o) const { return (bits[o >> 6] >> (o & 63)) & 1; }
+  PatternBits bits = 0;
+  bool operator==(const NeighbourPattern& o) const { return bits == o.bits; }
+  bool has(int bit) const { return (bits >> bit) & 1; }
+  bool sizeable(const Offset& d) const { return has(box_bit(d.x, d.y, d.z)); }
 };
 struct NeighbourPatternHash {
   size_t operator()(const NeighbourPattern& p) const {
-    return size_t(p.bits[0] * 0x9E3779B97F4A7C15ull ^ (p.bits[1] + 0x632BE59BD9B4E019ull + (p.bits[0] >> 7)));
+    const uint64_t lo = uint64_t(p.bits), hi = uint64_t(p.bits >> 64);
+    return size_t(lo * 0x9E3779B97F4A7C15ull ^ (hi + 0x632BE59BD9B4E019ull + (lo >> 7)));
   }
 };
 using Fit = std::array<Real, 4>;
@@ -102,12 +93,14 @@ struct DdmpDistribution {
   };
   ddmp_grid_detail::Fit fit;
   std::vector<Share> shares;
-  // The same by offset, (x + 2)·25 + (y + 2)·5 + z + 2: C, and whether that node receives.
-  std::array<Real, 125> C_at{};
-  std::array<bool, 125> receives{};
 };
 
 namespace ddmp_grid_detail {
+
+// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
+inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
+  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
+}
 
 // (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours (zero:
 // none, the node does not hand on); the weighted mean where they do not span 3D or where a
@@ -115,9 +108,8 @@ namespace ddmp_grid_detail {
 inline Fit fit_distribution(const NeighbourPattern& pattern) {
   const auto& offsets = neighbour_offsets();
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  for (int o = 0; o < offset_count; ++o) {
-    if (!pattern.sizeable(o)) continue;
-    const Offset& d = offsets[size_t(o)];
+  for (const Offset& d : offsets) {
+    if (!pattern.sizeable(d)) continue;
     const Eigen::Vector4d basis(1, d.x, d.y, d.z);
     A.noalias() += d.weight * basis * basis.transpose();
   }
@@ -130,11 +122,9 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
   // A node with mass hands it on too: a negative C_li could leave a receiver with none.
   // Such a node takes the weighted mean (a node outside the material has none).
   bool negative = false;
-  if (pattern.sizeable(127) && fit[0] != 0)
-    for (int o = 0; o < offset_count; ++o) {
-      const Offset& d = offsets[size_t(o)];
-      if (pattern.sizeable(o)) negative |= distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight) < 0;
-    }
+  if (pattern.has(own_mass_bit) && fit[0] != 0)
+    for (const Offset& d : offsets)
+      if (pattern.sizeable(d)) negative |= distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight) < 0;
   if (fit[0] == 0 || negative) fit = Eigen::Vector4d(1 / A(0, 0), 0, 0, 0);
   return {fit[0], fit[1], fit[2], fit[3]};
 }
@@ -151,16 +141,67 @@ inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& p
   DdmpDistribution d;
   d.fit = fit_distribution(pattern);
   if (d.fit[0] != 0)
-    for (int o = 0; o < offset_count; ++o) {
-      const Offset& off = neighbour_offsets()[size_t(o)];
-      if (!pattern.sizeable(o)) continue;
-      const Real C = distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight);
-      d.shares.push_back({off.x, off.y, off.z, C});
-      const size_t at = size_t((off.x + 2) * 25 + (off.y + 2) * 5 + off.z + 2);
-      d.C_at[at] = C;
-      d.receives[at] = true;
-    }
+    for (const Offset& off : neighbour_offsets())
+      if (pattern.sizeable(off))
+        d.shares.push_back({off.x, off.y, off.z, distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight)});
   return memo.insert({pattern, std::move(d)}).first->second;
+}
+
+// Per block, 64-bit node masks (bit n = node n, n = (i·4 + j)·4 + k): a row along k of local
+// (i, j) is the 4 bits from (i·4 + j)·4.
+// Rows along z of a mask over a block's halo of `reach` nodes: row[hi][hj] bit hk for halo
+// coordinates (local + reach), from the masks of the 27 blocks around (0 where inactive).
+struct MaskHalo {
+  uint8_t row[bw + 2 * reach][bw + 2 * reach];
+  // Bits z + reach of the offsets z = −reach … reach (5 bits) at local (i + x, j + y, k + ·).
+  unsigned z_run(int i, int j, int k, int x, int y) const { return (row[i + x + reach][j + y + reach] >> k) & 31u; }
+};
+inline void load_mask_halo(const DdmpNodalValues& nv, size_t b, const std::vector<uint64_t>& mask, MaskHalo& halo) {
+  static_assert(reach == 2 && bw == 4, "the row assembly takes 2 + 4 + 2 nodes per axis");
+  const auto& nb = nv.neighbours[b];
+  const auto mask_of = [&](int dx, int dy, int dz) -> uint64_t {
+    const int n = nb[size_t(neighbour_index(dx, dy, dz))];
+    return n < 0 ? 0 : mask[size_t(n)];
+  };
+  for (int hi = 0; hi < bw + 2 * reach; ++hi)
+    for (int hj = 0; hj < bw + 2 * reach; ++hj) {
+      const int dx = hi < reach ? -1 : hi < reach + bw ? 0 : 1, dy = hj < reach ? -1 : hj < reach + bw ? 0 : 1;
+      const int base = (((hi + reach) & 3) * bw + ((hj + reach) & 3)) * bw;  // the row's first bit in its block
+      const uint64_t below = mask_of(dx, dy, -1), at = mask_of(dx, dy, 0), above = mask_of(dx, dy, 1);
+      halo.row[hi][hj] = uint8_t(((below >> (base + 2)) & 3) | (((at >> base) & 15) << 2) | (((above >> base) & 3) << 6));
+    }
+}
+
+// The block b + (dx, dy, dz) holding local node (i, j, k) ∈ −reach … bw − 1 + reach, and the
+// node's index block · 64 + n in the grid's node order.
+inline size_t node_index_near(const DdmpNodalValues& nv, size_t b, int i, int j, int k) {
+  const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
+  const int nb = nv.neighbours[b][size_t(neighbour_index(block_step(i), block_step(j), block_step(k)))];
+  return size_t(nb) * SparseGrid::nodes_per_block + size_t((((i & 3) * bw) + (j & 3)) * bw + (k & 3));
+}
+
+// Calls fn(n) for the nodes n of a block whose bit is set in `mask`, in node order.
+template <class Fn>
+void for_each_bit(uint64_t mask, Fn&& fn) {
+  while (mask) {
+    fn(__builtin_ctzll(mask));
+    mask &= mask - 1;
+  }
+}
+// Calls f(std::integral_constant<int, count>{}) for the lane counts the schemes move (3, 4, 6, 7).
+template <class F>
+void with_lane_count(int count, F&& f) {
+  switch (count) {
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 7: return f(std::integral_constant<int, 7>{});
+  }
+  std::abort();  // a scheme moving another count of lanes: add it above
+}
+inline int block_colour(const SparseGrid::Coord& c) {
+  const auto mod3 = [](int v) { return ((v % 3) + 3) % 3; };
+  return (mod3(c[0]) * 3 + mod3(c[1])) * 3 + mod3(c[2]);
 }
 }  // namespace ddmp_grid_detail
 
@@ -175,91 +216,102 @@ inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& p
 // in L. Where the sizeable nodes do not span 3D (a plate one node thick), or where the node
 // has mass of its own and the fit would give a neighbour a negative share of it,
 // C_li = w(d) / Σ w: their weighted mean.
+// The work follows the surface, not the grid: a pass over the nodes makes three 64-bit masks
+// per block (sizeable, with mass, handing on); only blocks with a node that may hand on look
+// at their neighbourhood, through rows of those bits.
 inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+  const size_t blocks = grid.block_count();
+  std::vector<uint64_t>& sizeable = nv.sizeable_mask;
+  std::vector<uint64_t>& with_mass = nv.mass_mask;
+  sizeable.resize(blocks);
+  with_mass.resize(blocks);
+  nv.handing.assign(blocks, 0);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const Real* block = grid.block(b);
-    std::fill_n(coefficients_of(nv, b, 0), 4 * SparseGrid::nodes_per_block, Real(0));
-    std::fill_n(nv.distributions.begin() + std::ptrdiff_t(b * SparseGrid::nodes_per_block), SparseGrid::nodes_per_block, nullptr);
-    nv.block_has_small[b] = 0;
-    // A node hands on when its mass is small and no body holds it, or when a body holds it
-    // but no deformable point gives it mass (a node inside a rigid plate of points, one
-    // cell beyond the material: docs/solver.md, "Held nodes without mass").
-    const auto hands_on = [&](int n) {
+    uint64_t big = 0, positive = 0, candidates = 0;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
       const Real m = block[n * lane::count + lane::mass];
-      return m < small_mass && (block[n * lane::count + lane::constraint] == 0 || m == 0);
-    };
-    bool any = false;
-    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) any |= hands_on(n);
-    if (!any) return;
-    WideHalo<1> mass;
-    load_halo<reach, 1>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + lane::mass; }, mass);
-    const auto& offsets = neighbour_offsets();
-    for (int i = 0; i < bw; ++i)
-      for (int j = 0; j < bw; ++j)
-        for (int k = 0; k < bw; ++k) {
-          const int n = (i * bw + j) * bw + k;
-          if (!hands_on(n)) continue;
-          bool touches_mass = false;  // a node with mass within one cell: its L or force matters
-          for (int x = -1; x <= 1; ++x)
-            for (int y = -1; y <= 1; ++y)
-              for (int z = -1; z <= 1; ++z) touches_mass |= mass.at(i + x, j + y, k + z)[0] > 0;
-          if (!touches_mass) continue;
-          NeighbourPattern pattern;
-          for (int o = 0; o < offset_count; ++o) {
-            const Offset& d = offsets[size_t(o)];
-            if (mass.at(i + d.x, j + d.y, k + d.z)[0] >= small_mass) pattern.bits[o >> 6] |= uint64_t(1) << (o & 63);
-          }
-          if (block[n * lane::count + lane::mass] > 0) pattern.bits[1] |= uint64_t(1) << 63;
-          const DdmpDistribution& d = remembered_distribution(pattern);
-          if (d.fit[0] == 0) continue;
-          std::copy(d.fit.begin(), d.fit.end(), coefficients_of(nv, b, n));
-          nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)] = &d;
-          nv.block_has_small[b] = 1;
-        }
+      // A node hands on when its mass is small and no body holds it, or when a body holds it
+      // but no deformable point gives it mass (a node inside a rigid plate of points, one
+      // cell beyond the material: docs/solver.md, "Held nodes without mass").
+      const bool hands_on = m < small_mass && (block[n * lane::count + lane::constraint] == 0 || m == 0);
+      big |= uint64_t(m >= small_mass) << n;
+      positive |= uint64_t(m > 0) << n;
+      candidates |= uint64_t(hands_on) << n;
+    }
+    sizeable[b] = big;
+    with_mass[b] = positive;
+    nv.handing[b] = candidates;
   });
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    const uint64_t candidates = nv.handing[b];
+    if (!candidates) return;
+    MaskHalo big, positive;
+    load_mask_halo(nv, b, sizeable, big);
+    load_mask_halo(nv, b, with_mass, positive);
+    uint64_t handing = 0;
+    NeighbourPattern last_pattern;
+    const DdmpDistribution* last = nullptr;
+    for_each_bit(candidates, [&](int n) {
+      const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
+      bool touches_mass = false;  // a node with mass within one cell: its L or force matters
+      for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y) touches_mass |= (positive.z_run(i, j, k, x, y) & 0b01110u) != 0;
+      if (!touches_mass) return;
+      NeighbourPattern pattern;
+      for (int x = -reach; x <= reach; ++x)
+        for (int y = -reach; y <= reach; ++y)
+          pattern.bits |= PatternBits(big.z_run(i, j, k, x, y)) << box_bit(x, y, -reach);
+      pattern.bits &= ~(PatternBits(1) << own_mass_bit);
+      if ((positive.row[i + reach][j + reach] >> (k + reach)) & 1) pattern.bits |= PatternBits(1) << own_mass_bit;
+      // Neighbouring nodes along a face share their pattern: look the last one up once.
+      if (!last || !(pattern == last_pattern)) last = &remembered_distribution(pattern), last_pattern = pattern;
+      if (last->fit[0] == 0) return;
+      nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)] = last;
+      handing |= uint64_t(1) << n;
+    });
+    nv.handing[b] = handing;
+  });
+  // The blocks with nodes handing on, by colour (block coordinates mod 3): the hand-on's
+  // sources in blocks of one colour write disjoint nodes (move_ddmp_small_mass_lanes).
+  for (auto& list : nv.handing_by_colour) list.clear();
+  for (size_t b = 0; b < blocks; ++b)
+    if (nv.handing[b]) nv.handing_by_colour[size_t(block_colour(grid.coord(b)))].push_back(uint32_t(b));
 }
 
 // Hands lanes [first, first + count) of every small-mass node on to its sizeable
 // neighbours, C_li times each, and zeroes them (mass, momentum and force after P2G; the
-// remapped momentum of MUSL).
+// remapped momentum of MUSL). Each source pushes its shares; a source reaches the blocks
+// next to its own (reach 2 < 4 nodes), so sources in blocks of one colour (coordinates
+// mod 3) write disjoint nodes and run in parallel, and a receiving node gets its parts in
+// a fixed order (colour, then source node, then share): the same sums on any thread count.
 inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // stage and clear the sources
-    if (!nv.block_has_small[b]) return;
-    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
-      if (coefficients_of(nv, b, n)[0] == 0) continue;
+    for_each_bit(nv.handing[b], [&](int n) {
       Real* node = grid.block(b) + n * lane::count;
       Real* staged = nv.node(b, n);
       for (int c = 0; c < count; ++c) staged[c] = node[first + c], node[first + c] = 0;
-    }
+    });
   });
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // receivers pull their part
-    if (!near_small_mass(nv, b)) return;
-    // The sources within reach of this block (halo order: the same order for every
-    // receiver, so the sums do not depend on threads), then each source's part to the
-    // block's sizeable nodes within two cells of it: its shares, the sizeable nodes when
-    // it was found (find_ddmp_small_mass_nodes; they only gain mass, so they stay so).
-    IndexHalo<reach> nodes;
-    load_index_halo(nv, b, nodes);
-    Real* block = grid.block(b);
-    for (int si = -reach; si < bw + reach; ++si)
-      for (int sj = -reach; sj < bw + reach; ++sj)
-        for (int sk = -reach; sk < bw + reach; ++sk) {
-          const int32_t l = nodes.at(si, sj, sk);
-          if (l < 0) continue;
-          const DdmpDistribution* d = nv.distributions[size_t(l)];
-          if (!d) continue;
-          const Real* staged = nv.values.data() + size_t(l) * DdmpNodalValues::count;
-          for (int i = std::max(0, si - reach); i <= std::min(bw - 1, si + reach); ++i)
-            for (int j = std::max(0, sj - reach); j <= std::min(bw - 1, sj + reach); ++j)
-              for (int k = std::max(0, sk - reach); k <= std::min(bw - 1, sk + reach); ++k) {
-                const size_t at = size_t((i - si + 2) * 25 + (j - sj + 2) * 5 + (k - sk + 2));  // d = i − l
-                if (!d->receives[at]) continue;
-                Real* node = block + SparseGrid::node_offset(i, j, k);
-                for (int q = 0; q < count; ++q) node[first + q] += d->C_at[at] * staged[q];
-              }
-        }
+  with_lane_count(count, [&](auto lanes_moved) {
+    constexpr int Count = decltype(lanes_moved)::value;
+    Real* lanes = grid.block(0) + first;
+    for (const auto& colour : nv.handing_by_colour)
+      tbb::parallel_for(size_t(0), colour.size(), [&](size_t ci) {
+        const size_t b = colour[ci];
+        for_each_bit(nv.handing[b], [&](int n) {
+          const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+          Real staged[Count];
+          std::copy_n(nv.node(b, n), Count, staged);
+          const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
+          for (const DdmpDistribution::Share& share : d.shares) {  // sizeable, so active
+            Real* node = lanes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count;
+            for (int q = 0; q < Count; ++q) node[q] = std::fma(share.C, staged[q], node[q]);
+          }
+        });
+      });
   });
 }
 
@@ -268,33 +320,28 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
 // remapped velocity).
 inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    if (!nv.block_has_small[b]) return;
-    IndexHalo<reach> nodes;
-    load_index_halo(nv, b, nodes);
-    const Real* lanes = grid.block(0);
-    for (int i = 0; i < bw; ++i)
-      for (int j = 0; j < bw; ++j)
-        for (int k = 0; k < bw; ++k) {
-          const int n = (i * bw + j) * bw + k;
-          const DdmpDistribution* d = nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-          if (!d) continue;
-          Real* staged = nv.node(b, n);
-          for (int q = 0; q < count; ++q) staged[q] = 0;
-          for (const DdmpDistribution::Share& share : d->shares) {  // sizeable, so active
-            const Real* other = lanes + size_t(nodes.at(i + share.x, j + share.y, k + share.z)) * lane::count;
-            for (int q = 0; q < count; ++q) staged[q] += share.C * other[first + q];
-          }
+  with_lane_count(count, [&](auto lanes_read) {
+    constexpr int Count = decltype(lanes_read)::value;
+    const Real* lanes = grid.block(0) + first;
+    tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+      for_each_bit(nv.handing[b], [&](int n) {
+        const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+        const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
+        Real sum[Count] = {};
+        for (const DdmpDistribution::Share& share : d.shares) {  // sizeable, so active
+          const Real* other = lanes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count;
+          for (int q = 0; q < Count; ++q) sum[q] = std::fma(share.C, other[q], sum[q]);
         }
+        std::copy_n(sum, Count, nv.node(b, n));
+      });
+    });
   });
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    if (!nv.block_has_small[b]) return;
-    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
-      if (coefficients_of(nv, b, n)[0] == 0) continue;
+    for_each_bit(nv.handing[b], [&](int n) {
       Real* node = grid.block(b) + n * lane::count;
       const Real* staged = nv.node(b, n);
       for (int q = 0; q < count; ++q) node[first + q] = staged[q];
-    }
+    });
   });
 }
 

@@ -318,7 +318,8 @@ size_t Simulation::grid_memory_bytes() const {
   // DDMP on the grid: its nodal σ^d / L and per-block tables beside the lanes (ddmp_grid.hpp).
   const DdmpNodalValues& d = context_->ddmp_nodal;
   return state_.grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
-         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.coefficients.capacity() * sizeof(Real) + d.block_has_small.capacity();
+         d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.distributions.capacity() * sizeof(d.distributions[0]) +
+         (d.handing.capacity() + d.sizeable_mask.capacity() + d.mass_mask.capacity()) * sizeof(uint64_t);
 }
 
 size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(state_.particles); }
