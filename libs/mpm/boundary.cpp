@@ -86,6 +86,8 @@ void RigidBoundary::save(CheckpointWriter& out) const {
   out.rows("velocity", std::vector<Vec3>{state.velocity});
   out.rows("reaction", std::vector<Vec3>{state.reaction});
   out.scalar("work", state.work);
+  // Its clock (only a scheduled body reads it; the other kinds' checkpoints stay as they were).
+  if (settings.motion == RigidMotion::scheduled) out.scalar("time", state.time);
 }
 
 void RigidBoundary::load(const CheckpointReader& in) {
@@ -93,13 +95,14 @@ void RigidBoundary::load(const CheckpointReader& in) {
   state.velocity = in.rows<Vec3>("velocity", 1)[0];
   state.reaction = in.rows<Vec3>("reaction", 1)[0];
   state.work = in.scalar("work");
+  if (settings.motion == RigidMotion::scheduled) state.time = in.scalar("time");
   reaction = state.reaction;
 }
 
 BoundaryReport RigidBoundary::report() const {
   BoundaryReport r;
   r.name = settings.name;
-  r.role = settings.motion == RigidMotion::driven ? BoundaryRole::driven
+  r.role = settings.motion == RigidMotion::driven || settings.motion == RigidMotion::scheduled ? BoundaryRole::driven
            : settings.motion == RigidMotion::fixed ? BoundaryRole::fixed
                                                    : BoundaryRole::free;
   r.displacement = state.displacement;

@@ -41,8 +41,9 @@ constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{
     {BodyRole::deformable, "deformable"}, {BodyRole::fixed, "fixed"}, {BodyRole::driven, "driven"}}};
 constexpr std::array<std::pair<RigidShape, const char*>, 2> rigid_shape_names_{{
     {RigidShape::box, "box"}, {RigidShape::half_space, "half_space"}}};
-constexpr std::array<std::pair<RigidMotion, const char*>, 3> rigid_motion_names_{{
-    {RigidMotion::driven, "driven"}, {RigidMotion::free, "free"}, {RigidMotion::fixed, "fixed"}}};
+constexpr std::array<std::pair<RigidMotion, const char*>, 4> rigid_motion_names_{{
+    {RigidMotion::driven, "driven"}, {RigidMotion::free, "free"}, {RigidMotion::fixed, "fixed"},
+    {RigidMotion::scheduled, "scheduled"}}};
 constexpr std::array<std::pair<RigidCoupling, const char*>, 2> rigid_coupling_names_{{
     {RigidCoupling::no_slip, "no_slip"}, {RigidCoupling::penalty, "penalty"}}};
 }  // namespace

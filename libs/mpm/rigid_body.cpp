@@ -28,6 +28,13 @@ void validate(const RigidBodySettings& b, const std::string& where) {
     throw InputError(where, key + "mass", "a free rigid body needs a positive mass");
   if (b.motion == RigidMotion::fixed && b.velocity != Vec3::Zero())
     throw InputError(where, key + "velocity", "a fixed rigid body stays at rest: its velocity must be zero");
+  if (b.motion == RigidMotion::scheduled) {
+    validate(b.schedule, where, key + "schedule");
+    if (b.velocity != b.schedule.velocity(0))
+      throw InputError(where, key + "velocity", "a scheduled body's velocity is its schedule's: leave it out");
+  } else if (!b.schedule.empty()) {
+    throw InputError(where, key + "schedule", "only a scheduled body (motion = \"scheduled\") takes a schedule");
+  }
   if (!(b.contact_stiffness >= 0 && std::isfinite(b.contact_stiffness)))
     throw InputError(where, key + "contact.stiffness", "must be positive (or 0 for the default)");
   if (!(b.friction >= 0)) throw InputError(where, key + "contact.friction", "must be 0 or positive");
@@ -126,6 +133,7 @@ void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& s, const 
                         const Vec3& gravity, Real dt) {
   s.reaction = reaction;
   s.work += dt * reaction.dot(s.velocity);
+  s.time += dt;
   if (body.motion == RigidMotion::fixed) {  // at rest: no displacement, not even round-off
     s.velocity = Vec3::Zero();
     return;
@@ -135,11 +143,20 @@ void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& s, const 
     s.displacement += dt * body.velocity;
     return;
   }
+  if (body.motion == RigidMotion::scheduled) {  // exact: D(t) in closed form, no sum of steps
+    s.velocity = body.schedule.velocity(s.time);
+    s.displacement = body.schedule.displacement(s.time);
+    return;
+  }
   // The specimen pushes the body with −reaction (Newton's third law).
   const Vec3 acceleration = (body.gravity ? gravity : Vec3::Zero()) - reaction / body.mass;
   const Vec3 v_old = s.velocity;
   s.velocity = v_old + dt * acceleration;
   s.displacement += (dt / 2) * (v_old + s.velocity);
+}
+
+Real prescribed_max_speed(const RigidBodySettings& body) {
+  return body.motion == RigidMotion::scheduled ? body.schedule.max_speed() : body.velocity.norm();
 }
 
 Real rigid_kinetic_energy(const RigidBodySettings& body, const RigidBodyState& s) {

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/motion_schedule.hpp"
 #include "mpm/real.hpp"
 
 namespace latmpm::mpm {
@@ -42,6 +43,8 @@ enum class RigidMotion {
   driven,  // moves at `velocity` whatever the force on it
   free,    // M dV/dt = force from the specimen + M g (if `gravity`); `velocity` is V(0)
   fixed,   // stays where it is: a support (its `velocity` must be zero); its reaction is recorded
+  scheduled,  // follows `schedule` (velocity against time, motion_schedule.hpp) whatever the
+              // force on it: loading, holding and unloading in one run
 };
 
 // How a body acts on the material.
@@ -67,7 +70,9 @@ struct RigidBodySettings {
   Vec3 box_min = Vec3::Zero(), box_max = Vec3::Zero();          // m (box)
   Vec3 plane_point = Vec3::Zero(), plane_normal = Vec3::UnitZ();  // m, unit (half_space)
   RigidMotion motion = RigidMotion::driven;
-  Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free); zero (fixed)
+  Vec3 velocity = Vec3::Zero();  // m/s: prescribed (driven) or initial (free); zero (fixed);
+                                 // the schedule's V(0) (scheduled)
+  MotionSchedule schedule;       // scheduled bodies only
   Real mass = 0;                 // kg, free bodies
   bool gravity = true;           // free bodies: Settings::gravity acts on them
   RigidCoupling coupling = RigidCoupling::no_slip;
@@ -81,7 +86,8 @@ struct RigidBodySettings {
 // Throws InputError(where, "rigid_bodies.<name>.<key>", ...) for an empty or inverted box, a
 // zero normal, a free body without a positive mass, a fixed body with a non-zero velocity,
 // non-finite values, a negative or non-finite contact stiffness, a negative or NaN friction
-// coefficient.
+// coefficient, a scheduled body without a valid schedule (motion_schedule.hpp) or whose velocity
+// is not the schedule's V(0), a schedule on a body of another motion.
 void validate(const RigidBodySettings& body, const std::string& where);
 
 // What changes during a run.
@@ -90,6 +96,7 @@ struct RigidBodyState {
   Vec3 velocity = Vec3::Zero();      // m/s, V
   Vec3 reaction = Vec3::Zero();      // N, force of the body on the model in the last step
   Real work = 0;                     // J, ∫ reaction · V dt: work done on the model
+  Real time = 0;                     // s, the body's clock since the start (scheduled bodies)
 };
 
 // Whether the node at x (m) is coupled to the body displaced by d: its support, the open
@@ -117,9 +124,13 @@ void impose_rigid_velocity(SparseGrid& grid, Real h, int lane, const RigidBodySe
                            const RigidBodyState& state, Real marker);
 
 // Advances a body over a step of length dt after the grid update gave its reaction (a fixed
-// body stays at rest and only records it).
+// body stays at rest and only records it; a scheduled one takes its displacement D(t) and
+// velocity V(t) from the schedule at the step's end, so it follows the schedule exactly).
 void advance_rigid_body(const RigidBodySettings& body, RigidBodyState& state, const Vec3& reaction,
                         const Vec3& gravity, Real dt);
+
+// The largest speed the body is given (m/s): |velocity|, or the schedule's largest (scheduled).
+Real prescribed_max_speed(const RigidBodySettings& body);
 
 // Kinetic energy ½ M V² and potential energy −M g·(X − X(0)) of a free body (J); zero for
 // driven and fixed bodies (their energy is not part of the model: they are a boundary condition).

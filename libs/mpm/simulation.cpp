@@ -179,7 +179,8 @@ void Simulation::add_rigid_body(const RigidBodySettings& body) {
   validate(body, "scene");
   if (body.coupling == RigidCoupling::penalty && std::holds_alternative<ContactFields>(context_->grid_fields))
     throw InputError(where, "contact", "penalty contact with rigid bodies does not run with grid contact yet; use no-slip");
-  check_body_speed(body.velocity.norm(), "scene", where + ".velocity");
+  check_body_speed(prescribed_max_speed(body), "scene",
+                   where + (body.motion == RigidMotion::scheduled ? ".schedule" : ".velocity"));
   rigid_bodies_.push_back(body);
   RigidBodyState state;
   state.velocity = body.velocity;

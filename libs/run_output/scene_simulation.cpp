@@ -46,6 +46,8 @@ Eigen::Vector3d loading_axis(const Scene& scene) {
   for (const auto& r : scene.rigid_bodies)
     if (r.motion == mpm::RigidMotion::driven) return r.velocity.normalized();
   for (const auto& r : scene.rigid_bodies)
+    if (r.motion == mpm::RigidMotion::scheduled && r.schedule.max_speed() > 0) return r.schedule.first_direction();
+  for (const auto& r : scene.rigid_bodies)
     if (r.motion == mpm::RigidMotion::free && r.velocity.norm() > 0) return r.velocity.normalized();
   if (scene.settings.gravity.norm() > 0) return scene.settings.gravity.normalized();
   return Eigen::Vector3d(0, 0, -1);

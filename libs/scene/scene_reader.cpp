@@ -42,8 +42,11 @@ void read_run(TableReader run, Scene& s) {
 void read_settings_and_output(TableReader& root, Scene& s) {
   TableReader grid = root.table("grid"), time = root.table_or_empty("time"),
               gravity = root.table_or_empty("gravity"), out = root.table_or_empty("output");
-  // Before read(): it inserts record_tag's default, after which the key is always there.
-  if (out.has("record_tag")) s.record_where = out.where("record_tag");
+  // Before read(): it inserts record_tag's default, after which the key is always there. The
+  // default tag is no request either when written out: the resolved scene (RUN_DIR/scene.toml,
+  // which --resume reads) names it, and a run without record points must resume.
+  if (out.has("record_tag") && out.text("record_tag", "") != mpm::Settings{}.record_tag)
+    s.record_where = out.where("record_tag");
   read(grid, time, gravity, out, s.settings);
   grid.finish();
   if (auto qs = time.optional_table("quasi_static")) {

@@ -89,6 +89,24 @@ void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
   }
   contact->finish();
 }
+
+// schedule = [{ time = "0s", velocity = [...] }, ...]: a scheduled body's velocity against time,
+// linear between knots (motion_schedule.hpp); its `velocity` is the schedule's.
+void read_schedule(TableReader& b, mpm::RigidBodySettings& body) {
+  if (b.has("velocity")) b.fail("velocity", "a scheduled body takes its velocity from its schedule: leave it out");
+  for (TableReader& knot : b.tables("schedule")) {
+    mpm::VelocityKnot k;
+    k.time = knot.quantity("time", dimension::time);
+    k.velocity = knot.vector("velocity", dimension::velocity);
+    knot.finish();
+    const size_t i = body.schedule.knots.size();
+    if (i == 0 && k.time != 0) knot.fail("time", "the first knot must be at time 0 (where the run starts)");
+    if (i > 0 && !(k.time > body.schedule.knots.back().time))
+      knot.fail("time", "must be later than the knot before it (times increase strictly)");
+    body.schedule.knots.push_back(k);
+  }
+  body.velocity = body.schedule.velocity(0);
+}
 }  // namespace
 
 void read(TableReader& b, mpm::RigidBodySettings& body) {
@@ -114,9 +132,13 @@ void read(TableReader& b, mpm::RigidBodySettings& body) {
     body.mass = b.quantity("mass", dimension::mass);
     if (!(body.mass > 0)) b.fail("mass", "must be positive");
     body.gravity = b.boolean("gravity", body.gravity);
+  } else if (body.motion == mpm::RigidMotion::scheduled) {
+    read_schedule(b, body);
   } else if (b.has("velocity")) {
     b.fail("velocity", "a fixed rigid body stays at rest: it takes no velocity");
   }
+  if (body.motion != mpm::RigidMotion::scheduled && b.has("schedule"))
+    b.fail("schedule", "only a scheduled body (motion = \"scheduled\") takes a schedule (this one is " + motion + ")");
   if (body.motion != mpm::RigidMotion::free) {
     if (b.has("mass")) b.fail("mass", "only free rigid bodies take a mass (this one is " + motion + ")");
     if (b.has("gravity")) b.fail("gravity", "only free rigid bodies take gravity (this one is " + motion + ")");

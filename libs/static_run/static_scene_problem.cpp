@@ -27,9 +27,10 @@ mpm::MaterialParameters static_material(const BodySpec& body) {
 
 StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& points) {
   for (const RigidBodySpec& r : scene.rigid_bodies)
-    if (r.motion == mpm::RigidMotion::free)
+    if (r.motion == mpm::RigidMotion::free || r.motion == mpm::RigidMotion::scheduled)
       throw InputError(r.where, "rigid_bodies." + r.name + ".motion",
-                       "the static solver has no free bodies (no inertia): use driven or fixed");
+                       "the static solver has no " + mpm::to_string(r.motion) +
+                           " bodies (one monotonic load path): use driven or fixed");
   StaticSceneProblem out;
   out.half_size.resize(points.size());
   for (size_t p = 0; p < points.size(); ++p) out.half_size[p] = points.domain_half_size(p);

@@ -93,6 +93,8 @@ TEST_CASE("Defaults are documented in the resolved scene, which reads back to th
   // The default tag is not the scene's request: point files without it are fine.
   CHECK(s.record_where.empty());
   CHECK_FALSE(parse(base_scene, {"output.record_tag=top"}).record_where.empty());
+  // Nor in the resolved scene, which names it (a --resume reads it: a run without record points).
+  CHECK(parse_scene(s.resolved_toml, "resolved.toml", "/nonexistent").record_where.empty());
   CHECK_THAT(s.resolved_toml, Catch::Contains("scheme = 'musl'") || Catch::Contains("scheme = \"musl\""));
   CHECK_THAT(s.resolved_toml, Catch::Contains("record_tag"));
 
