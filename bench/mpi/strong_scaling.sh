@@ -85,7 +85,8 @@ done
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{v[NR]=$1} END{if (NR % 2) print v[(NR+1)/2]; else printf "%.5f\n", (v[NR/2] + v[NR/2+1]) / 2}'; }
 long=$((warmup + steps))
 echo
-echo "T2P30-E10, cell $cell, $(grep -o '[0-9]* points' "run-t1-$long/log.txt" | head -1 || true), $steps steps (runs of $long minus runs of $warmup), medians of the rounds:"
+points_run=$(grep -o '(deformable): [0-9]* points' "run-t1-$long/log.txt" | awk '{n += $2} END {print n}')
+echo "T2P30-E10, cell $cell, $points_run points, $steps steps (runs of $long minus runs of $warmup), medians of the rounds:"
 printf "%-28s %12s %12s   %s\n" "" "wall s/step" "CPU s/step" "(each round: wall; CPU)"
 declare -A label=([t1]="1 thread" [t2]="2 threads (TBB)" [r2]="2 MPI processes × 1 thread")
 declare -A median_wall

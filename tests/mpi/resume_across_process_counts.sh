@@ -14,7 +14,8 @@ run=("$source_dir/data/scenes/column-tiny.toml" --set points.0.file=c-points.h5 
 "$bin_dir/latmpm-solve" "${run[@]}" --set run.max_steps=200 -o whole
 "$bin_dir/latmpm-solve" "${run[@]}" --set run.max_steps=80 -o one-at-80
 mpi 2 "${run[@]}" --set run.max_steps=80 -o parts
-# The gathered checkpoint is the one-process state (the /output group holds wall times).
+# The checkpoint the 2 processes wrote (each its rows) is the one-process state (the /output
+# group holds wall times).
 h5diff one-at-80/checkpoint.h5 parts/checkpoint.h5 /state /state
 mpi 3 --resume parts --set run.max_steps=140 --quiet --threads 1
 grep -q "processes: 3 (MPI)" parts/log.txt

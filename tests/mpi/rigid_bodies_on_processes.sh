@@ -5,8 +5,8 @@
 # coupled through the grid, no-slip, (2) replaced by a free flyer (an impact, paper A Sec. 6:
 # a 50 g box at 2 m/s, no-slip), (3) in penalty contact as the scene has it (stick), and
 # (4) the flyer in penalty contact with friction 0.1; on 2 processes, and (3) on 4 too.
-# series.csv byte for byte (loads, reactions, contact energies, the flyer's motion) and the
-# last snapshot's particles (h5diff).
+# series.csv byte for byte (loads, reactions, contact energies, the flyer's motion), the
+# last snapshot's particles and the final checkpoint's state (h5diff).
 # usage: rigid_bodies_on_processes.sh BIN_DIR SOURCE_DIR MPI_SOLVE MPIRUN   (empty: skip)
 set -euo pipefail
 bin_dir=$1 source_dir=$2 mpi_solve=${3:-} mpirun=${4:-}
@@ -27,5 +27,7 @@ for v in no_slip:2 flyer:2 penalty:2 penalty:4 penalty_flyer:2; do
   grep -q "processes: $processes (MPI)" "$name-$processes/log.txt"
   cmp "$name-one/series.csv" "$name-$processes/series.csv"
   h5diff "$name-one/snapshots/snap_000150.h5" "$name-$processes/snapshots/snap_000150.h5" /particles /particles
+  # The final checkpoint, every process's rows of it (with penalty contact's optional fields).
+  h5diff "$name-one/checkpoint.h5" "$name-$processes/checkpoint.h5" /state /state
   echo "$name: $processes processes equal one, bit for bit"
 done

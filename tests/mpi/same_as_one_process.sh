@@ -26,6 +26,7 @@ cmp one/series.csv many/series.csv
 for f in one/snapshots/snap_*.h5; do
   h5diff "$f" "many/snapshots/$(basename "$f")" /particles /particles
 done
+cmp one/snapshots.xmf many/snapshots.xmf  # the XDMF series ParaView opens
 # The checkpoint at the last step (run.max_steps): every process wrote its rows of it.
 h5diff one/checkpoint.h5 many/checkpoint.h5 /state /state
 echo "series, snapshots and checkpoint of $processes processes equal one process's, bit for bit"
