@@ -30,7 +30,12 @@ for l in "$@"; do
   e=$(printf '%.4g' "$e")
   # status.toml's reason, as the static run writes it (libs/static_run/static_solve_run.cpp).
   end=$(sed -n 's/^reason = "the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N"$/\1;\2;\3/p' "$path/status.toml" 2>/dev/null || true)
-  if [ ! -f "$path/done" ]; then
+  # A path stopped before it ended (a run killed or still going, no done stamp): how far its
+  # series got, stable all the way (the last row of series.csv: travel m, load N).
+  last=$(tail -n 1 "$path/series.csv" 2>/dev/null | awk -F, 'NR == 1 && $3 + 0 > 0 { printf "%.4g mm (%.4g N)", $3 * 1e3, $4 }' || true)
+  if [ ! -f "$path/done" ] && [ -n "$last" ]; then
+    reason="path stopped unfinished: stable to $last" travel="" load=""
+  elif [ ! -f "$path/done" ]; then
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
