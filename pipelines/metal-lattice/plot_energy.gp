@@ -19,4 +19,4 @@ plot csv using @u:(column("external_work[J]")) with lines lw 2 title "work in (p
      csv using @u:(column("strain_energy[J]")) with lines lw 2 title "elastic energy", \
      csv using @u:(column("friction_dissipation[J]")) with lines lw 2 dt 2 title "friction", \
      csv using @u:(column("kinetic_energy[J]")) with lines lw 1 dt 3 title "kinetic", \
-     csv using @u:(-column("displacement[m]")*1e3) axes x1y2 with lines lw 1 lc rgb "black" dt 4 title "platen travel"
+     csv using @u:(column("displacement[m]")*1e3) axes x1y2 with lines lw 1 lc rgb "black" dt 4 title "platen travel"

@@ -15,15 +15,10 @@ import csv
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from run_status import read_status  # noqa: E402
 
-def status_of(run):
-    out = {}
-    with open(os.path.join(run, "status.toml")) as f:
-        for line in f:
-            if "=" in line and not line.startswith("#"):
-                key, value = (part.strip() for part in line.split("=", 1))
-                out[key] = value.strip('"')
-    return out
+
 
 
 def analyse(run):
@@ -32,14 +27,14 @@ def analyse(run):
     if not rows:
         raise ValueError(f"{run}/series.csv: no rows")
     col = lambda r, name: float(r[name])
-    travel = [-col(r, "displacement[m]") * 1e3 for r in rows]  # mm, down positive
+    travel = [col(r, "displacement[m]") * 1e3 for r in rows]  # mm, along the loading axis (down)
     force = [col(r, "load_driven[N]") for r in rows]
     deepest = max(range(len(rows)), key=lambda i: travel[i])
     peak = max(force)
     # Unloading: the first row after the deepest point where the platen carries no force.
     release = next((i for i in range(deepest, len(rows)) if force[i] <= 1e-9 * peak), None)
     end = rows[-1]
-    s = status_of(run)
+    s = read_status(run)
     return {
         "u_max_mm": travel[deepest],
         "peak_force_N": peak,
@@ -98,10 +93,10 @@ def main():
     ]
     failed = []
     for label, r in results:
-        rec = (r["u_max_mm"] - r["u_release_mm"]) / r["u_max_mm"] if r["released"] else float("nan")
+        rec = (r["u_max_mm"] - r["u_release_mm"]) / r["u_max_mm"] if r["released"] and r["u_max_mm"] > 0 else float("nan")
         verdict = ""
         if "elastic" in label:
-            ok = r["released"] and abs(r["u_release_mm"]) <= a.recover * r["u_max_mm"]
+            ok = r["released"] and r["u_max_mm"] > 0 and abs(r["u_release_mm"]) <= a.recover * r["u_max_mm"]
             verdict = " (recovers)" if ok else f" (does NOT recover within {a.recover:.0%} of u_max)"
             if not ok:
                 failed.append(label)

@@ -18,17 +18,12 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from run_status import read_status  # noqa: E402
+
 TIMES_US = (10, 20, 50, 100, 150)
 
 
-def status_of(run):
-    out = {}
-    with open(os.path.join(run, "status.toml")) as f:
-        for line in f:
-            if "=" in line and not line.startswith("#"):
-                key, value = (part.strip() for part in line.split("=", 1))
-                out[key] = value.strip('"')
-    return out
 
 
 class Run:
@@ -38,7 +33,7 @@ class Run:
             self.rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
         if not self.rows:
             raise ValueError("no rows in series.csv")
-        self.status = status_of(path)
+        self.status = read_status(path)
         self.t_end_us = self.rows[-1]["time[s]"] * 1e6
 
     def at(self, t_us, column):
