@@ -5,10 +5,11 @@ For each run (its series.csv and status.toml): the deepest platen travel u_max, 
 platen force, the travel u_release where the platen's force returns to zero on unloading (no
 point touches it: the lattice's recovered top; the residual deformation), the recovered share
 (u_max - u_release) / u_max, the energies at the deepest point and at the end, and the cost.
-A run marked elastic must recover: its u_release must lie within `--recover` (a fraction of
-u_max) of the start; the table says whether it does.
+A run named by --must-recover (an elastic run without friction) must recover: its u_release
+must lie within `--recover` (a fraction of u_max) of the start; the table says whether it
+does, and the script exits 3 when it does not.
 
-usage: residual.py --height H0_MM --out DIR [--recover 0.02] LABEL=RUN_DIR ...
+usage: residual.py --height H0_MM --out DIR [--recover 0.02] [--must-recover LABEL ...] LABEL=RUN_DIR ...
 writes DIR/residual.csv and DIR/residual.md (standard library only)."""
 import argparse
 import csv
@@ -46,6 +47,7 @@ def analyse(run):
         "work_end_J": col(end, "external_work[J]"),
         "plastic_end_J": col(end, "plastic_dissipation[J]"),
         "strain_energy_end_J": col(end, "strain_energy[J]"),
+        "friction_end_J": col(end, "friction_dissipation[J]"),
         "kinetic_end_J": col(end, "kinetic_energy[J]"),
         "energy_error_end_J": col(end, "energy_error[J]"),
         "t_end_us": col(end, "time[s]") * 1e6,
@@ -63,7 +65,9 @@ def main():
     p.add_argument("--out", required=True)
     p.add_argument("--recover", type=float, default=0.02,
                    help="an elastic run recovers when u_release <= this fraction of u_max (default 0.02)")
-    p.add_argument("runs", nargs="+", help="LABEL=RUN_DIR; a label containing 'elastic' must recover")
+    p.add_argument("--must-recover", nargs="*", default=[], metavar="LABEL",
+                   help="runs that must recover (elastic, frictionless)")
+    p.add_argument("runs", nargs="+", help="LABEL=RUN_DIR")
     a = p.parse_args()
     results = []
     for item in a.runs:
@@ -87,15 +91,15 @@ def main():
         "zero on unloading (the lattice's recovered top); residual strain u_release / H0; recovered "
         "(u_max - u_release) / u_max. Energies in J; CPU = the solver's user + system time.", "",
         "| case | u_max (mm) | peak force (N) | u_release (mm) | residual strain | recovered | "
-        "elastic energy at u_max (of the work) | plastic work at the end | elastic energy left at the end | "
-        "energy error | status, steps, CPU (s) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
+        "elastic energy at u_max (of the work) | plastic work at the end | friction at the end | "
+        "elastic energy left at the end | energy error | status, steps, CPU (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     failed = []
     for label, r in results:
         rec = (r["u_max_mm"] - r["u_release_mm"]) / r["u_max_mm"] if r["released"] and r["u_max_mm"] > 0 else float("nan")
         verdict = ""
-        if "elastic" in label:
+        if label in a.must_recover:
             ok = r["released"] and r["u_max_mm"] > 0 and abs(r["u_release_mm"]) <= a.recover * r["u_max_mm"]
             verdict = " (recovers)" if ok else f" (does NOT recover within {a.recover:.0%} of u_max)"
             if not ok:
@@ -105,14 +109,14 @@ def main():
             f"| {label} | {r['u_max_mm']:.3f} | {r['peak_force_N']:.0f} | "
             + (f"{r['u_release_mm']:.3f}" if r["released"] else "never released")
             + f" | {r['u_release_mm'] / a.height:.4f} | {rec:.1%}{verdict} | "
-            f"{r['strain_energy_at_max_J']:.3f} ({share:.1%}) | {r['plastic_end_J']:.3f} | "
+            f"{r['strain_energy_at_max_J']:.3f} ({share:.1%}) | {r['plastic_end_J']:.3f} | {r['friction_end_J']:.3f} | "
             f"{r['strain_energy_end_J']:.3f} | {r['energy_error_end_J']:.3f} of {r['work_end_J']:.3f} | "
             f"{r['status']}, {r['steps']}, {r['cpu_s']:.0f} |")
     with open(os.path.join(a.out, "residual.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
     if failed:
-        print(f"residual.py: the elastic run(s) {', '.join(failed)} did not recover", file=sys.stderr)
+        sys.exit(f"residual.py: {', '.join(failed)} did not recover within {a.recover:.0%} of u_max")
 
 
 if __name__ == "__main__":
