@@ -5,7 +5,31 @@ list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB /usr/lib/c
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(TBB REQUIRED)
 find_package(OpenVDB REQUIRED)            # find-module shipped by libopenvdb-dev
+# HDF5: the serial library (libhdf5-dev), except in the MPI build (-DLATMPM_MPI=ON), which
+# writes one file from every process and links the parallel one (libhdf5-openmpi-dev,
+# h5pcc) instead: one program links one of the two, their symbols are the same.
+if(LATMPM_MPI)
+  find_program(LATMPM_HDF5_PARALLEL_WRAPPER NAMES h5pcc h5pcc.openmpi)
+  if(NOT LATMPM_HDF5_PARALLEL_WRAPPER)
+    message(FATAL_ERROR "LATMPM_MPI=ON needs the parallel HDF5 (h5pcc not found): bash scripts/install-deps.sh "
+                        "(Debian: libhdf5-openmpi-dev)")
+  endif()
+  # A build directory configured before found the serial library and cached it: find again.
+  if(NOT "${HDF5_C_COMPILER_EXECUTABLE}" STREQUAL "${LATMPM_HDF5_PARALLEL_WRAPPER}")
+    get_cmake_property(cached CACHE_VARIABLES)
+    foreach(variable IN LISTS cached)
+      if(variable MATCHES "^HDF5_")
+        unset(${variable} CACHE)
+      endif()
+    endforeach()
+    set(HDF5_C_COMPILER_EXECUTABLE ${LATMPM_HDF5_PARALLEL_WRAPPER} CACHE FILEPATH "HDF5 C compiler wrapper (parallel)")
+  endif()
+  set(HDF5_PREFER_PARALLEL ON)
+endif()
 find_package(HDF5 REQUIRED COMPONENTS C)  # needs the C language enabled
+if(LATMPM_MPI AND NOT HDF5_IS_PARALLEL)
+  message(FATAL_ERROR "LATMPM_MPI=ON: the HDF5 found (${HDF5_C_LIBRARIES}) is not the parallel one")
+endif()
 find_package(CGAL REQUIRED)
 find_package(Threads REQUIRED)
 

@@ -9,9 +9,10 @@ packages=(
   libsuitesparse-dev libopenblas0-pthread libnlopt-dev
   libhypre-dev
   # The solver on MPI (docs/cluster.md: make mpi, and the mpi.* tests of make test): OpenMPI's
-  # headers and mpirun. hypre pulls them in already; named for the tests. Rank 0 writes the
-  # outputs with the serial HDF5 above, so libhdf5-openmpi-dev is not needed.
-  libopenmpi-dev openmpi-bin
+  # headers and mpirun (hypre pulls them in already; named for the tests), and the parallel
+  # HDF5 that build writes snapshots and checkpoints with (every process its part of one
+  # file). It installs beside the serial libhdf5-dev, which every other build links.
+  libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
 )
 missing=()
 for p in "${packages[@]}"; do

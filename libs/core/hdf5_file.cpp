@@ -2,6 +2,8 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <type_traits>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -78,18 +80,20 @@ Hdf5File::Hdf5File(const std::string& path, Mode mode) : path_(path) {
 Hdf5File::~Hdf5File() { close_quietly(); }
 
 Hdf5File::Hdf5File(Hdf5File&& other) noexcept
-    : path_(std::move(other.path_)), id_(std::exchange(other.id_, -1)) {}
+    : path_(std::move(other.path_)), id_(std::exchange(other.id_, -1)), transfer_(std::exchange(other.transfer_, 0)) {}
 
 Hdf5File& Hdf5File::operator=(Hdf5File&& other) noexcept {
   if (this != &other) {
     close_quietly();
     path_ = std::move(other.path_);
     id_ = std::exchange(other.id_, -1);
+    transfer_ = std::exchange(other.transfer_, 0);
   }
   return *this;
 }
 
 bool Hdf5File::close_quietly() noexcept {
+  if (transfer_ > 0) H5Pclose(std::exchange(transfer_, 0));
   if (id_ < 0) return true;
   unsigned intent = 0;
   const bool writing = H5Fget_intent(id_, &intent) >= 0 && (intent & H5F_ACC_RDWR);
@@ -211,6 +215,83 @@ std::vector<int64_t> Hdf5File::read_int64(const std::string& d, std::vector<size
 }
 std::vector<uint8_t> Hdf5File::read_uint8(const std::string& d, std::vector<size_t>* s) const {
   return read_numeric<uint8_t>(d, s, H5T_NATIVE_UINT8);
+}
+
+namespace {
+template <typename T>
+hid_t native_type() {
+  if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
+  else if constexpr (std::is_same_v<T, float>) return H5T_NATIVE_FLOAT;
+  else if constexpr (std::is_same_v<T, int32_t>) return H5T_NATIVE_INT32;
+  else if constexpr (std::is_same_v<T, int64_t>) return H5T_NATIVE_INT64;
+  else return H5T_NATIVE_UINT8;
+}
+}  // namespace
+
+template <typename T>
+void Hdf5File::reserve(const std::string& dataset, const std::vector<size_t>& dims) {
+  create_group(parent_of(dataset));
+  if (exists(dataset)) H5Ldelete(id_, dataset.c_str(), H5P_DEFAULT);
+  std::vector<hsize_t> hdims(dims.begin(), dims.end());
+  Handle space(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr), H5Sclose);
+  // Contiguous, as write() lays a dataset out; allocated now so that the processes filling
+  // it need not, and not filled: every row is written.
+  Handle create(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  H5Pset_alloc_time(create.id, H5D_ALLOC_TIME_EARLY);
+  H5Pset_fill_time(create.id, H5D_FILL_TIME_NEVER);
+  Handle set(H5Dcreate2(id_, dataset.c_str(), native_type<T>(), space.id, H5P_DEFAULT, create.id, H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) fail_write(dataset, "cannot create dataset (disk full?)");
+}
+
+template <typename T>
+void Hdf5File::write_rows(const std::string& dataset, const std::vector<T>& data, const std::vector<RowBlock>& blocks) {
+  Handle set(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!set.ok()) fail_write(dataset, "cannot open dataset");
+  Handle file_space(H5Dget_space(set.id), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(file_space.id);
+  std::vector<hsize_t> dims(static_cast<size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(file_space.id, dims.data(), nullptr);
+  size_t row_size = 1, rows = 0;
+  for (size_t d = 1; d < dims.size(); ++d) row_size *= dims[d];
+  H5Sselect_none(file_space.id);
+  std::vector<hsize_t> start(dims.size(), 0), count(dims);
+  size_t end = 0;
+  for (const RowBlock& b : blocks) {
+    if (dims.empty() || b.first < end || b.first + b.count > dims[0])
+      fail_write(dataset, "internal: rows [" + std::to_string(b.first) + ", " + std::to_string(b.first + b.count) +
+                              ") out of order or beyond the dataset's " + std::to_string(dims.empty() ? 0 : dims[0]));
+    end = b.first + b.count;
+    if (b.count == 0) continue;
+    start[0] = b.first, count[0] = b.count;
+    H5Sselect_hyperslab(file_space.id, H5S_SELECT_OR, start.data(), nullptr, count.data(), nullptr);
+    rows += b.count;
+  }
+  if (data.size() != rows * row_size) fail(dataset, "internal: the rows do not match the data size");
+  // Rows arrive in file order (the selection's order), one after the other in memory.
+  const hsize_t values = rows * row_size, extent = std::max<hsize_t>(values, 1);
+  Handle memory_space(H5Screate_simple(1, &extent, nullptr), H5Sclose);
+  if (values == 0) H5Sselect_none(memory_space.id);
+  if (H5Dwrite(set.id, native_type<T>(), memory_space.id, file_space.id, transfer_, data.data()) < 0)
+    fail_write(dataset, "write failed (disk full?)");
+}
+
+#define LATMPM_HDF5_ROWS(T)                                                                 \
+  template void Hdf5File::reserve<T>(const std::string&, const std::vector<size_t>&);      \
+  template void Hdf5File::write_rows<T>(const std::string&, const std::vector<T>&, const std::vector<RowBlock>&);
+LATMPM_HDF5_ROWS(double)
+LATMPM_HDF5_ROWS(float)
+LATMPM_HDF5_ROWS(int32_t)
+LATMPM_HDF5_ROWS(int64_t)
+LATMPM_HDF5_ROWS(uint8_t)
+#undef LATMPM_HDF5_ROWS
+
+Hdf5File open_hdf5_with(const std::string& path, int64_t file_access, int64_t transfer) {
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, file_access);
+  H5Pclose(file_access);
+  Hdf5File file(path, id, transfer);  // closes the transfer list in any case
+  if (id < 0) file.fail_write("", "cannot open the file to write its rows");
+  return file;
 }
 
 void Hdf5File::write_strings(const std::string& dataset, const std::vector<std::string>& data) {

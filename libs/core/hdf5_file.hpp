@@ -7,9 +7,16 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace latmpm {
+
+// Rows [first, first + count) of a dataset's first dimension: the part of a file one
+// process writes when several write one file (parallel HDF5, docs/cluster.md).
+struct RowBlock {
+  size_t first = 0, count = 0;
+};
 
 class Hdf5File {
  public:
@@ -40,6 +47,20 @@ class Hdf5File {
              const std::vector<size_t>& dims);
   void write_strings(const std::string& dataset, const std::vector<std::string>& data);
 
+  // A dataset laid out now and filled later, part by part (write_rows): of shape `dims` and
+  // T's type (double, float, int32_t, int64_t, uint8_t), its storage allocated at once and
+  // never filled with a default value (the rows written later cover it). So one process
+  // can lay a file out that several then fill at once (open_shared_hdf5, parallel HDF5).
+  template <typename T>
+  void reserve(const std::string& dataset, const std::vector<size_t>& dims);
+  // Rows of a dataset (reserved or written): `data` holds the rows of `blocks` (ascending,
+  // apart) one after the other, each row the dataset's trailing dimensions. On a file that
+  // several processes opened together (open_shared_hdf5) every process calls it for every
+  // dataset in the same order, with its own blocks (none: it writes nothing), and the rows
+  // go to the file in one collective transfer.
+  template <typename T>
+  void write_rows(const std::string& dataset, const std::vector<T>& data, const std::vector<RowBlock>& blocks);
+
   // Reads convert from the stored numeric type, except reals into integers (refused: an index
   // stored as 0.5 is not an index). `dims`, when given, receives the shape.
   std::vector<double> read_doubles(const std::string& dataset, std::vector<size_t>* dims = nullptr) const;
@@ -68,6 +89,8 @@ class Hdf5File {
   void create_group(const std::string& group);
 
  private:
+  friend Hdf5File open_hdf5_with(const std::string& path, int64_t file_access, int64_t transfer);
+  Hdf5File(std::string path, int64_t id, int64_t transfer) : path_(std::move(path)), id_(id), transfer_(transfer) {}
   template <typename T>
   void write_numeric(const std::string& dataset, const std::vector<T>& data,
                      const std::vector<size_t>& dims, int64_t mem_type);
@@ -80,6 +103,12 @@ class Hdf5File {
 
   std::string path_;
   int64_t id_ = -1;  // hid_t, kept as int64_t so the header stays free of hdf5.h
+  int64_t transfer_ = 0;  // raw-data transfer properties (0: H5P_DEFAULT; collective on a shared file)
 };
+
+// Opens an existing file for writing with the given HDF5 file-access and data-transfer
+// property lists (both taken over, closed with the file): how core/shared_hdf5_file opens a
+// file on several MPI processes.
+Hdf5File open_hdf5_with(const std::string& path, int64_t file_access, int64_t transfer);
 
 }  // namespace latmpm

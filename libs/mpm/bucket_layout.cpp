@@ -8,35 +8,67 @@
 
 namespace latmpm::mpm {
 
-MergedLayout merge_bucket_layouts(const std::vector<BucketTables>& parts, const std::vector<size_t>& particle_counts) {
-  if (parts.size() != particle_counts.size()) throw std::logic_error("merge_bucket_layouts: one count per part");
-  // Every bucket as (part, index), in bucket order; a bucket is held by one part.
-  std::vector<std::pair<uint32_t, uint32_t>> all;
-  std::vector<size_t> first_particle(parts.size(), 0);
-  for (size_t q = 0; q < parts.size(); ++q) {
-    if (q > 0) first_particle[q] = first_particle[q - 1] + particle_counts[q - 1];
-    for (uint32_t b = 0; b < parts[q].buckets.size(); ++b) all.emplace_back(uint32_t(q), b);
-  }
-  auto key = [&](const std::pair<uint32_t, uint32_t>& item) { return bucket_order_key(parts[item.first].buckets[item.second]); };
-  std::sort(all.begin(), all.end(), [&](const auto& a, const auto& b) { return key(a) < key(b); });
+std::vector<BucketSize> bucket_sizes(const std::vector<Bucket>& buckets) {
+  std::vector<BucketSize> sizes;
+  sizes.reserve(buckets.size());
+  for (const Bucket& b : buckets) sizes.push_back({bucket_order_key(b), b.end - b.begin, b.run_end - b.run_begin});
+  return sizes;
+}
 
-  MergedLayout out;
-  out.order.reserve(first_particle.empty() ? 0 : first_particle.back() + particle_counts.back());
-  for (const auto& [q, b] : all) {
-    const Bucket& from = parts[q].buckets[b];
-    Bucket to = from;
-    to.begin = uint32_t(out.order.size());
-    to.run_begin = uint32_t(out.tables.runs.size());
-    for (uint32_t r = from.run_begin; r < from.run_end; ++r) {
-      const BodyRun& run = parts[q].runs[r];
-      const uint32_t begin = uint32_t(out.order.size());
-      for (uint32_t p = run.begin; p < run.end; ++p) out.order.push_back(uint32_t(first_particle[q] + p));
-      out.tables.runs.push_back({run.body, begin, uint32_t(out.order.size())});
-    }
-    to.end = uint32_t(out.order.size());
-    to.run_end = uint32_t(out.tables.runs.size());
-    out.tables.buckets.push_back(to);
+BucketPlacement place_buckets(std::vector<BucketSize> all, const std::vector<Bucket>& mine, uint64_t particles) {
+  std::sort(all.begin(), all.end(), [](const BucketSize& a, const BucketSize& b) { return a.key < b.key; });
+  BucketPlacement out;
+  out.buckets = all.size();
+  out.particles = all.empty() ? particles : 0;
+  // Prefix sums in bucket order; this process's buckets are among them, in the same order.
+  size_t at = 0;
+  for (const Bucket& b : mine) {
+    const uint64_t key = bucket_order_key(b);
+    for (; at < all.size() && all[at].key < key; ++at) out.particles += all[at].particles, out.runs += all[at].runs;
+    if (at == all.size() || all[at].key != key) throw std::logic_error("place_buckets: a bucket of this process is not among all");
+    out.row.push_back(at), out.first_particle.push_back(out.particles), out.first_run.push_back(out.runs);
   }
+  for (; at < all.size(); ++at) out.particles += all[at].particles, out.runs += all[at].runs;
+  return out;
+}
+
+namespace {
+// Appends rows [first, first + count) to `blocks`, joined to the last block where they continue it.
+void add_block(std::vector<RowBlock>& blocks, uint64_t first, uint64_t count) {
+  if (count == 0) return;
+  if (!blocks.empty() && blocks.back().first + blocks.back().count == first)
+    blocks.back().count += count;
+  else
+    blocks.push_back({size_t(first), size_t(count)});
+}
+}  // namespace
+
+OneProcessRows one_process_rows(const BucketTables& mine, const BucketPlacement& placement, size_t particles) {
+  OneProcessRows out;
+  if (!placement.writes) return out;
+  if (mine.buckets.empty()) {  // before the first sort: the particles as they are
+    add_block(out.particle_blocks, 0, particles);
+    return out;
+  }
+  uint32_t next = 0;  // the buckets' particles follow one another here (the sort's layout)
+  for (size_t b = 0; b < mine.buckets.size(); ++b) {
+    const Bucket& bucket = mine.buckets[b];
+    if (bucket.begin != next) throw std::logic_error("one_process_rows: the buckets do not hold the particles in order");
+    next = bucket.end;
+    const int64_t first = int64_t(placement.first_particle[b]), first_run = int64_t(placement.first_run[b]);
+    const int64_t shift = first - int64_t(bucket.begin);  // its particles' one-process indices
+    out.buckets.insert(out.buckets.end(), {bucket.coord[0], bucket.coord[1], bucket.coord[2], first,
+                                           first + int64_t(bucket.end - bucket.begin), first_run,
+                                           first_run + int64_t(bucket.run_end - bucket.run_begin)});
+    for (uint32_t r = bucket.run_begin; r < bucket.run_end; ++r) {
+      const BodyRun& run = mine.runs[r];
+      out.runs.insert(out.runs.end(), {run.body, int64_t(run.begin) + shift, int64_t(run.end) + shift});
+    }
+    add_block(out.bucket_blocks, placement.row[b], 1);
+    add_block(out.run_blocks, placement.first_run[b], bucket.run_end - bucket.run_begin);
+    add_block(out.particle_blocks, placement.first_particle[b], bucket.end - bucket.begin);
+  }
+  if (next != particles) throw std::logic_error("one_process_rows: particles outside the buckets");
   return out;
 }
 

@@ -1,6 +1,6 @@
 // Particles in bucket layout (particle_buckets.hpp) handed between process counts: how the
-// MPI domain writes a checkpoint of N processes in the one-process layout and resumes it on
-// M (docs/cluster.md, "Checkpoints"). Because ParticleBuckets::sort orders particles by a
+// processes of an MPI run write a checkpoint in the one-process layout, each its own rows,
+// and resume it on M (docs/cluster.md, "Checkpoints"). Because ParticleBuckets::sort orders particles by a
 // total key (bucket, body, cell, id), a bucket holds the same particles in the same order
 // on whichever process holds it; the one-process layout is every process's buckets in
 // bucket order. No MPI here: pure functions of the layout, tested in every build.
@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/hdf5_file.hpp"  // RowBlock
 #include "mpm/particle_buckets.hpp"
 #include "mpm/particles.hpp"
 
@@ -20,21 +21,36 @@ struct BucketTables {
   std::vector<BodyRun> runs;
 };
 
-// Particles with their tables: a process's part, or every process's gathered.
-struct BucketedParticles {
-  Particles particles;
-  BucketTables tables;
+// A bucket as processes tell one another about theirs: its key in bucket order
+// (bucket_order_key) and the particles and runs it holds.
+struct BucketSize {
+  uint64_t key = 0, particles = 0, runs = 0;
 };
+std::vector<BucketSize> bucket_sizes(const std::vector<Bucket>& buckets);
 
-// The one-process layout of several parts (each part's buckets and runs indexing its own
-// particles and runs from 0; its particles following the previous part's in one array):
-// the buckets in the order one process keeps them (bucket_order_key), and `order`, the
-// concatenated particles' indices in the new order (Particles::permute's argument).
-struct MergedLayout {
-  BucketTables tables;
-  std::vector<uint32_t> order;
+// Where a process's buckets go in the one-process layout (every process's buckets in bucket
+// order): of each of its buckets, its row in the one-process bucket table and the one-process
+// index of its first particle and first run; and the tables' totals. `writes`: this process
+// writes its rows (false for all but rank 0 while every process holds every particle).
+struct BucketPlacement {
+  std::vector<uint64_t> row, first_particle, first_run;
+  uint64_t buckets = 0, particles = 0, runs = 0;
+  bool writes = true;
 };
-MergedLayout merge_bucket_layouts(const std::vector<BucketTables>& parts, const std::vector<size_t>& particle_counts);
+// From every process's bucket sizes (any order, each key once) and this process's buckets
+// (in bucket order, among them). `particles`: the total when there are no buckets (a run
+// saved before its first sort, every process holding every particle).
+BucketPlacement place_buckets(std::vector<BucketSize> all, const std::vector<Bucket>& mine, uint64_t particles);
+
+// This process's part of the one-process checkpoint's tables and particle arrays: its bucket
+// and run rows with one-process indices (bucket_rows' and run_rows' columns), and the row
+// blocks they and its `particles` particles (in their order here) fill. So N processes
+// write the file one process writes, each its own rows (docs/cluster.md, "Checkpoints").
+struct OneProcessRows {
+  std::vector<int64_t> buckets, runs;
+  std::vector<RowBlock> bucket_blocks, run_blocks, particle_blocks;
+};
+OneProcessRows one_process_rows(const BucketTables& mine, const BucketPlacement& placement, size_t particles);
 
 // Keeps the buckets whose keep[b] is set, with their runs, re-indexed from 0; returns which
 // of the `particles` particles they hold (keep, in their order, for the layout to match).

@@ -66,17 +66,48 @@ void CheckpointWriter::integers(const std::string& name, const std::vector<int64
   file_.write(path(name), values, {values.size() / columns, columns});
 }
 
+namespace {
+// How a row type is stored: int32, uint8, int64 as they are; uint32 as int64; reals and
+// fixed-size Eigen matrices as doubles, `components` per row.
+template <class T>
+auto stored(const std::vector<T>& values) {
+  if constexpr (std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t> || std::is_same_v<T, int64_t>)
+    return values;
+  else if constexpr (std::is_same_v<T, uint32_t>)
+    return std::vector<int64_t>(values.begin(), values.end());
+  else if constexpr (CheckpointCodec<T>::components == 1)
+    return std::vector<double>(values.begin(), values.end());
+  else
+    return flatten(values);
+}
+template <class T>
+using Stored = typename decltype(stored(std::vector<T>{}))::value_type;
+
+template <class T>
+std::vector<size_t> row_shape(size_t rows) {
+  constexpr int n = CheckpointCodec<T>::components;
+  return n == 1 ? std::vector<size_t>{rows} : std::vector<size_t>{rows, size_t(n)};
+}
+}  // namespace
+
 template <class T>
 void CheckpointWriter::rows(const std::string& name, const std::vector<T>& values) {
-  const size_t n = values.size();
-  if constexpr (std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t> || std::is_same_v<T, int64_t>)
-    file_.write(path(name), values, {n});
-  else if constexpr (std::is_same_v<T, uint32_t>)
-    file_.write(path(name), std::vector<int64_t>(values.begin(), values.end()), {n});
-  else if constexpr (CheckpointCodec<T>::components == 1)
-    file_.write(path(name), std::vector<double>(values.begin(), values.end()), {n});
-  else
-    file_.write(path(name), flatten(values), {n, size_t(CheckpointCodec<T>::components)});
+  file_.write(path(name), stored(values), row_shape<T>(values.size()));
+}
+
+template <class T>
+void CheckpointWriter::reserve_rows(const std::string& name, size_t total) {
+  file_.reserve<Stored<T>>(path(name), row_shape<T>(total));
+}
+
+template <class T>
+void CheckpointWriter::write_rows(const std::string& name, const std::vector<T>& values,
+                                  const std::vector<RowBlock>& blocks) {
+  file_.write_rows(path(name), stored(values), blocks);
+}
+
+void CheckpointWriter::reserve_integers(const std::string& name, size_t rows, size_t columns) {
+  file_.reserve<int64_t>(path(name), {rows, columns});
 }
 
 CheckpointReader::CheckpointReader(const Hdf5File& file, std::string group) : file_(file), group_(std::move(group)) {
@@ -173,8 +204,11 @@ std::vector<T> CheckpointReader::rows(const std::string& name, size_t count, Val
   }
 }
 
-#define LATMPM_CHECKPOINT_ROWS(T)                                                        \
-  template void CheckpointWriter::rows<T>(const std::string&, const std::vector<T>&);   \
+#define LATMPM_CHECKPOINT_ROWS(T)                                                                        \
+  template void CheckpointWriter::rows<T>(const std::string&, const std::vector<T>&);                   \
+  template void CheckpointWriter::reserve_rows<T>(const std::string&, size_t);                          \
+  template void CheckpointWriter::write_rows<T>(const std::string&, const std::vector<T>&,              \
+                                                const std::vector<RowBlock>&);                          \
   template std::vector<T> CheckpointReader::rows<T>(const std::string&, size_t, ValueRange) const;
 LATMPM_CHECKPOINT_ROWS(Real)
 LATMPM_CHECKPOINT_ROWS(Vec3)

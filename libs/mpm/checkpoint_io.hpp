@@ -17,9 +17,7 @@
 #include "mpm/particles.hpp"  // CpdiParticleDomain
 #include "mpm/real.hpp"
 
-namespace latmpm {
-class Hdf5File;
-}
+#include "core/hdf5_file.hpp"  // RowBlock
 
 namespace latmpm::mpm {
 
@@ -52,8 +50,19 @@ class CheckpointWriter {
   // int32, uint8, int64 as they are; uint32 as int64.
   template <class T>
   void rows(const std::string& name, const std::vector<T>& values);
+  // The same in two parts, for a file several processes write (docs/cluster.md, "Output"):
+  // one process lays out `total` rows (reserve_rows, reserve_integers), then each process
+  // writes its blocks of them (write_rows: `values` holds the blocks' rows one after the
+  // other), the same dataset as rows() / integers() writes whole.
+  template <class T>
+  void reserve_rows(const std::string& name, size_t total);
+  template <class T>
+  void write_rows(const std::string& name, const std::vector<T>& values, const std::vector<RowBlock>& blocks);
+  void reserve_integers(const std::string& name, size_t rows, size_t columns);
   // The same writer for a sub-group (its datasets under group/sub).
   CheckpointWriter sub(const std::string& sub) const;
+  // A writer of rows into a group another process laid out (no attributes written).
+  static CheckpointWriter existing(Hdf5File& file, std::string group) { return {file, std::move(group), true}; }
 
  private:
   CheckpointWriter(Hdf5File& file, std::string group, bool);

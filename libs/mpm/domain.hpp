@@ -13,10 +13,15 @@
 //   sum_in_order       sums of per-bucket and per-block partial sums (energies, reactions,
 //                      body centres, the record layer) in the one-process order of the
 //                      buckets and blocks, so they too are bit-identical to one process.
-//   gather_buckets     a checkpoint: every process's buckets in the one-process layout, on
-//                      rank 0, so a checkpoint of N processes is the one of one process.
+//   bucket_placement   a checkpoint: where this process's buckets go in the one-process
+//                      layout, so that every process writes its own rows of the file one
+//                      process writes (write_shared_rows).
 //   distribute_buckets a restored checkpoint (every process read all of it): each keeps
 //                      its share of the buckets as they are, so it resumes on any count.
+//   particles_in_id_block  a snapshot: the particles of a block of point ids, so that each
+//                      process writes its block of the file's rows (points in id order).
+//   write_shared_rows  an output file one process laid out, every process writing its rows
+//                      into it at once (parallel HDF5).
 //   contact_spreads_in_order  penalty contact: every touching point's force record, in the
 //                      one-process particle order, on every process (contact_spread.hpp).
 //   reduce_sum/max/min the other global sums and extremes (speeds for the stable time
@@ -27,10 +32,15 @@
 // bit-identical to one process (docs/architecture.md, "The domain seam").
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
+#include "core/hdf5_file.hpp"
 #include "mpm/bucket_layout.hpp"
 #include "mpm/contact_spread.hpp"
+#include "mpm/particle_buckets.hpp"
+#include "mpm/particle_fields.hpp"
 #include "mpm/particles.hpp"
 #include "mpm/real.hpp"
 
@@ -87,12 +97,34 @@ class SingleProcessDomain {
   void barrier() const {}
   int process_count() const { return 1; }
   int rank() const { return 0; }
-  // Every process's particles on rank 0 (empty elsewhere), for the outputs.
-  Particles gather_particles(const Particles& local) const { return local; }
-  // Every process's particles, buckets and runs on rank 0 in the one-process layout (empty
-  // elsewhere). Collective.
-  BucketedParticles gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
-    return {local, {buckets.buckets(), buckets.runs()}};
+  // Where this process's buckets go in the one-process layout (bucket_layout.hpp); `particles`
+  // held here. Collective.
+  BucketPlacement bucket_placement(const ParticleBuckets& buckets, size_t particles) const {
+    return place_buckets(bucket_sizes(buckets.buckets()), buckets.buckets(), particles);
+  }
+  // Which fields of the registry (particle_fields.hpp, in its order) the run carries: an
+  // optional field held by any process. Collective.
+  std::vector<uint8_t> fields_present(const Particles& particles) const {
+    std::vector<uint8_t> present;
+    for_each_particle_field(particles, [&](const ParticleField& f, const auto& v, const auto&) {
+      present.push_back(!(f.optional && v.empty()));
+    });
+    return present;
+  }
+  // The particles whose ids are this process's block [first, first + count) of an even cut of
+  // 0 .. total − 1 among the processes (one process: all of them); sets `first`. Collective.
+  Particles particles_in_id_block(const Particles& local, size_t, size_t& first) const {
+    first = 0;
+    return local;
+  }
+  // The file at `path` (rank 0's path; the others' is ignored), which rank 0 laid out and
+  // closed, opened on every process; fill(file) writes this process's rows into it
+  // (Hdf5File::write_rows, every process the same datasets in the same order), and the file
+  // is closed. Collective: several processes write one file at once (parallel HDF5).
+  void write_shared_rows(const std::string& path, const std::function<void(Hdf5File&)>& fill) const {
+    Hdf5File file(path, Hdf5File::Mode::read_write);
+    fill(file);
+    file.close();
   }
   // After every process read the whole state (a checkpoint): keeps this process's buckets
   // and their particles, in their order.

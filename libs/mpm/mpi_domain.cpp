@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/errors.hpp"
+#include "core/shared_hdf5_file.hpp"
 #include "mpm/domain.hpp"
 #include "mpm/particle_buckets.hpp"
 #include "mpm/particle_fields.hpp"
@@ -85,13 +86,6 @@ void unpack_particle(Particles& ps, const char*& in, const FieldMask& present) {
     std::memcpy(static_cast<void*>(&v.back()), in, sizeof(v.back()));  // plain values, Eigen's too
     in += sizeof(v.back());
   });
-}
-
-std::vector<char> packed(const Particles& ps, const FieldMask& present) {
-  std::vector<char> out(ps.size() * particle_bytes(ps, present));
-  char* at = out.data();
-  for (size_t p = 0; p < ps.size(); ++p) pack_particle(ps, p, at, present);
-  return out;
 }
 
 // Keeps the particles whose keep[p] is set, in their order.
@@ -347,36 +341,47 @@ void MpiDomain::migrate_particles(Particles& ps, Real cell_size) {
   if (largest * size_ > imbalance_threshold * total) repartition(ps, inv_h);
 
   // Each particle to the owner of its bucket.
-  const FieldMask present = fields_present(ps);
-  const size_t bytes = particle_bytes(ps, present);
-  const RecordType particle(bytes);  // counts in particles
   std::vector<int> owner(ps.size());
-  std::vector<int> send_counts(size_t(size_), 0);
+  std::vector<uint8_t> keep(ps.size());
   for (size_t p = 0; p < ps.size(); ++p) {
     owner[p] = partition_.owner(bucket_of(ps.position[p], inv_h));
-    if (owner[p] != rank_) ++send_counts[size_t(owner[p])];
+    keep[p] = owner[p] == rank_;
   }
+  const FieldMask present = fields_present(ps);
+  const SentParticles sent = send_to_owners(ps, owner, present);
+  traffic_.migration_bytes += sent.bytes;
+  traffic_.particles_sent += sent.particles;
+  keep_particles(ps, keep);
+  for (const char* at = sent.received.data(); at < sent.received.data() + sent.received.size();)
+    unpack_particle(ps, at, present);
+}
+
+MpiDomain::SentParticles MpiDomain::send_to_owners(const Particles& ps, const std::vector<int>& owner,
+                                                   const FieldMask& present) const {
+  const size_t bytes = particle_bytes(ps, present);
+  const RecordType particle(bytes);  // counts in particles
+  std::vector<int> send_counts(size_t(size_), 0);
+  for (size_t p = 0; p < ps.size(); ++p)
+    if (owner[p] != rank_) ++send_counts[size_t(owner[p])];
   std::vector<int> receive_counts(size_t(size_), 0);
   check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, comm_), "MPI_Alltoall");
   const auto send_displs = displacements(send_counts), receive_displs = displacements(receive_counts);
   std::vector<char> out((size_t(send_displs.back()) + size_t(send_counts.back())) * bytes);
-  std::vector<char> in((size_t(receive_displs.back()) + size_t(receive_counts.back())) * bytes);
+  SentParticles sent;
+  sent.received.resize((size_t(receive_displs.back()) + size_t(receive_counts.back())) * bytes);
   std::vector<size_t> fill(send_displs.begin(), send_displs.end());
-  std::vector<uint8_t> keep(ps.size());
   for (size_t p = 0; p < ps.size(); ++p) {
-    keep[p] = owner[p] == rank_;
-    if (keep[p]) continue;
+    if (owner[p] == rank_) continue;
     char* at = out.data() + fill[size_t(owner[p])] * bytes;
     pack_particle(ps, p, at, present);
     ++fill[size_t(owner[p])];
-    ++traffic_.particles_sent;
+    ++sent.particles;
   }
-  check(MPI_Alltoallv(out.data(), send_counts.data(), send_displs.data(), particle, in.data(), receive_counts.data(),
-                      receive_displs.data(), particle, comm_),
+  check(MPI_Alltoallv(out.data(), send_counts.data(), send_displs.data(), particle, sent.received.data(),
+                      receive_counts.data(), receive_displs.data(), particle, comm_),
         "MPI_Alltoallv");
-  traffic_.migration_bytes += out.size();
-  keep_particles(ps, keep);
-  for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(ps, at, present);
+  sent.bytes = out.size();
+  return sent;
 }
 
 void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& buckets) {
@@ -502,67 +507,69 @@ void MpiDomain::exchange_halo(SparseGrid& grid, int colour) {
   traffic_.halo_bytes += send_size * lanes * sizeof(Real);
 }
 
-template <class T>
-std::vector<T> MpiDomain::gather_to_root(const std::vector<T>& local, size_t width, std::vector<int>& records) const {
-  static_assert(std::is_trivially_copyable_v<T>);
-  const RecordType record(width * sizeof(T));
-  const int n = record_count(local.size() / width);
-  records.assign(size_t(size_), 0);
-  check(MPI_Gather(&n, 1, MPI_INT, records.data(), 1, MPI_INT, 0, comm_), "MPI_Gather");
-  const auto displs = displacements(records);
-  std::vector<T> all(rank_ == 0 ? (size_t(displs.back()) + size_t(records.back())) * width : 0);
-  check(MPI_Gatherv(local.data(), n, record, all.data(), records.data(), displs.data(), record, 0, comm_),
-        "MPI_Gatherv");
-  return all;
+std::vector<BucketSize> MpiDomain::all_bucket_sizes(const std::vector<Bucket>& mine) const {
+  std::vector<uint64_t> flat;  // (key, particles, runs) of each bucket here
+  for (const BucketSize& b : bucket_sizes(mine)) flat.insert(flat.end(), {b.key, b.particles, b.runs});
+  const std::vector<uint64_t> all = allgather_keys(flat, comm_, size_).keys;
+  std::vector<BucketSize> sizes;
+  for (size_t i = 0; i + 2 < all.size(); i += 3) sizes.push_back({all[i], all[i + 1], all[i + 2]});
+  return sizes;
 }
 
-Particles MpiDomain::gather_particles(const Particles& local) const {
-  if (!distributed()) return rank_ == 0 ? local : Particles{};
-  std::vector<int> sizes;
-  const FieldMask present = fields_present(local);
-  const std::vector<char> in = gather_to_root(packed(local, present), particle_bytes(local, present), sizes);
-  Particles all;
-  if (rank_ != 0) return all;
-  // The same fields as the local set (history columns, optional fields present or not).
-  all = local;
-  all.resize(0);
-  for (const char* p = in.data(); p < in.data() + in.size();) unpack_particle(all, p, present);
-  return all;
+BucketPlacement MpiDomain::bucket_placement(const ParticleBuckets& buckets, size_t particles) const {
+  if (!distributed()) {  // every process holds every particle (one process's layout): rank 0 writes them
+    BucketPlacement placement = place_buckets(bucket_sizes(buckets.buckets()), buckets.buckets(), particles);
+    placement.writes = rank_ == 0;
+    return placement;
+  }
+  return place_buckets(all_bucket_sizes(buckets.buckets()), buckets.buckets(), particles);
 }
 
-BucketedParticles MpiDomain::gather_buckets(const Particles& local, const ParticleBuckets& buckets) const {
-  if (!distributed()) return rank_ == 0 ? BucketedParticles{local, {buckets.buckets(), buckets.runs()}} : BucketedParticles{};
-  std::vector<int> particle_counts, bucket_counts, run_counts;
-  const FieldMask present = fields_present(local);
-  const size_t width = particle_bytes(local, present);
-  const std::vector<char> bytes = gather_to_root(packed(local, present), width, particle_counts);
-  const std::vector<int64_t> bucket_table = gather_to_root(bucket_rows(buckets.buckets()), bucket_row_width, bucket_counts);
-  const std::vector<int64_t> run_table = gather_to_root(run_rows(buckets.runs()), run_row_width, run_counts);
-  BucketedParticles out;
-  if (rank_ != 0) return out;
-  // Each process's tables index its own particles and runs; merged, they are one process's.
-  const size_t processes = size_t(size_);
-  std::vector<BucketTables> parts(processes);
-  std::vector<size_t> counts(processes);
-  auto bucket_at = bucket_table.begin();
-  auto run_at = run_table.begin();
-  for (size_t q = 0; q < processes; ++q) {
-    const auto bucket_values = std::ptrdiff_t(size_t(bucket_counts[q]) * bucket_row_width);
-    const auto run_values = std::ptrdiff_t(size_t(run_counts[q]) * run_row_width);
-    parts[q].buckets = buckets_from_rows({bucket_at, bucket_at + bucket_values});
-    parts[q].runs = runs_from_rows({run_at, run_at + run_values});
-    bucket_at += bucket_values, run_at += run_values;
-    counts[q] = size_t(particle_counts[q]);
+namespace {
+// Point ids cut evenly among the processes: process r's block begins here.
+size_t id_block_start(size_t total, int r, int processes) { return size_t(uint64_t(total) * uint64_t(r) / uint64_t(processes)); }
+}  // namespace
+
+Particles MpiDomain::particles_in_id_block(const Particles& local, size_t total, size_t& first) const {
+  first = id_block_start(total, rank_, size_);
+  const size_t end = id_block_start(total, rank_ + 1, size_);
+  auto owner_of = [&](uint32_t id) {
+    int r = int(uint64_t(id) * uint64_t(size_) / std::max<uint64_t>(total, 1));
+    while (r + 1 < size_ && id_block_start(total, r + 1, size_) <= id) ++r;
+    while (r > 0 && id_block_start(total, r, size_) > id) --r;
+    return r;
+  };
+  Particles block = local;
+  std::vector<uint8_t> keep(local.size());
+  for (size_t p = 0; p < local.size(); ++p) keep[p] = local.id[p] >= first && local.id[p] < end;
+  if (!distributed()) {  // every process holds every particle
+    keep_particles(block, keep);
+  } else {
+    std::vector<int> owner(local.size());
+    for (size_t p = 0; p < local.size(); ++p) owner[p] = owner_of(local.id[p]);
+    const FieldMask present = fields_present(local);
+    const std::vector<char> in = send_to_owners(local, owner, present).received;
+    keep_particles(block, keep);
+    for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(block, at, present);
   }
-  MergedLayout merged = merge_bucket_layouts(parts, counts);
-  out.particles = local;  // the same fields as the local set
-  out.particles.resize(0);
-  for (uint32_t p : merged.order) {
-    const char* at = bytes.data() + size_t(p) * width;
-    unpack_particle(out.particles, at, present);
+  if (block.size() != end - first) throw std::logic_error("particles_in_id_block: ids missing or repeated");
+  std::vector<uint32_t> order(block.size());
+  for (uint32_t p = 0; p < order.size(); ++p) order[block.id[p] - first] = p;
+  block.permute(order);
+  return block;
+}
+
+void MpiDomain::write_shared_rows(const std::string& path, const std::function<void(Hdf5File&)>& fill) const {
+  std::string shared = path;
+  if (size_ > 1) {  // rank 0 staged the file under a name of its own: every process opens that one
+    uint64_t length = path.size();
+    check(MPI_Bcast(&length, 1, MPI_UINT64_T, 0, comm_), "MPI_Bcast");
+    shared.resize(size_t(length));
+    check(MPI_Bcast(shared.data(), record_count(size_t(length)), MPI_CHAR, 0, comm_), "MPI_Bcast");
   }
-  out.tables = std::move(merged.tables);
-  return out;
+  Hdf5File file = size_ > 1 ? open_shared_hdf5(shared, comm_) : Hdf5File(shared, Hdf5File::Mode::read_write);
+  fill(file);
+  file.close();
 }
 
 void MpiDomain::distribute_buckets(Particles& ps, BucketTables& tables) {
@@ -585,20 +592,12 @@ std::vector<ContactSpread> MpiDomain::contact_spreads_in_order(std::vector<Conta
                                                                const ParticleBuckets& buckets) const {
   if (!distributed()) return mine;  // every process holds every particle, in the one-process order
   const std::vector<Bucket>& local = buckets.buckets();
-  std::vector<uint64_t> flat;  // (key, particles) of each bucket here
-  for (const Bucket& b : local) flat.push_back(bucket_order_key(b)), flat.push_back(b.end - b.begin);
-  const std::vector<uint64_t> all = allgather_keys(flat, comm_, size_).keys;
-  std::vector<std::pair<uint64_t, uint64_t>> counts;
-  for (size_t i = 0; i + 1 < all.size(); i += 2) counts.emplace_back(all[i], all[i + 1]);
-  std::sort(counts.begin(), counts.end());
-  std::map<uint64_t, uint64_t> first;  // bucket key -> its first particle's one-process index
-  uint64_t before = 0;
-  for (const auto& [key, n] : counts) first[key] = before, before += n;
+  const BucketPlacement placement = place_buckets(all_bucket_sizes(local), local, 0);
   for (ContactSpread& s : mine) {
     const auto b = size_t(std::upper_bound(local.begin(), local.end(), s.index,
                                            [](uint64_t p, const Bucket& x) { return p < x.end; }) -
                           local.begin());
-    s.index = first.at(bucket_order_key(local.at(b))) + (s.index - local[b].begin);
+    s.index = placement.first_particle.at(b) + (s.index - local[b].begin);
   }
   const RecordType record(sizeof(ContactSpread));
   const int n = record_count(mine.size());

@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -77,8 +78,12 @@ class MpiDomain {
   Real reduce_min(Real local) const;
   int process_count() const { return size_; }
   int rank() const { return rank_; }
-  Particles gather_particles(const Particles& local) const;
-  BucketedParticles gather_buckets(const Particles& local, const ParticleBuckets& buckets) const;
+  BucketPlacement bucket_placement(const ParticleBuckets& buckets, size_t particles) const;
+  // Which particle fields the run carries (particle_fields.hpp's order), the same on every
+  // process (collective): optional fields are empty where a process holds no particle.
+  std::vector<uint8_t> fields_present(const Particles& particles) const;
+  Particles particles_in_id_block(const Particles& local, size_t total, size_t& first) const;
+  void write_shared_rows(const std::string& path, const std::function<void(Hdf5File&)>& fill) const;
   void distribute_buckets(Particles& particles, BucketTables& tables);
   std::vector<ContactSpread> contact_spreads_in_order(std::vector<ContactSpread> mine,
                                                       const ParticleBuckets& buckets) const;
@@ -91,14 +96,16 @@ class MpiDomain {
  private:
   bool distributed() const { return size_ > 1 && distributed_; }
   void repartition(const Particles& particles, Real inv_h);
-  // Which particle fields the run carries (particle_fields.hpp's order), the same on every
-  // process (collective): optional fields are empty where a process holds no particle.
-  std::vector<uint8_t> fields_present(const Particles& particles) const;
-  // Every process's `local` records (`width` values each: a packed particle's bytes, a
-  // table's row) to rank 0, one after the other in rank order; `records` receives each
-  // process's count of records there. Collective.
-  template <class T>
-  std::vector<T> gather_to_root(const std::vector<T>& local, size_t width, std::vector<int>& records) const;
+  // Sends each particle p whose owner[p] is another process to it (the fields of `present`,
+  // packed); what the others sent here comes back packed, in rank order. Collective.
+  struct SentParticles {
+    std::vector<char> received;
+    uint64_t bytes = 0, particles = 0;  // sent
+  };
+  SentParticles send_to_owners(const Particles& particles, const std::vector<int>& owner,
+                               const std::vector<uint8_t>& present) const;
+  // Every process's bucket sizes (bucket_layout.hpp), in rank order. Collective.
+  std::vector<BucketSize> all_bucket_sizes(const std::vector<Bucket>& mine) const;
   std::vector<Real> gather_in_rank_order(const Real* local, int count) const;
 
   MPI_Comm comm_ = MPI_COMM_NULL;

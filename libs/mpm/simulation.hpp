@@ -94,13 +94,16 @@ class Simulation {
   // diagnostics and accumulated work, rigid-body state, the carried stable-step inputs —
   // into / from the HDF5 group `group` of an open file. load_state needs a Simulation built
   // from the same scene (same bodies, settings, rigid bodies); throws InputError otherwise.
-  // On several processes (domain.hpp) both are collective: save_state gathers every
-  // process's part into the one-process layout and writes it on rank 0 (file: nullptr on
-  // the others), so the file is the one a single process writes; load_state reads the
-  // whole file on every process, which keeps its share: a checkpoint of N processes
-  // resumes on any number.
+  // On several processes (domain.hpp) all three are collective: rank 0's save_state lays
+  // the state out at its one-process size (file: nullptr on the others) and, after rank 0
+  // closed the file, save_state_rows (rank 0's path) has every process write its
+  // particles and bucket rows into it at once (parallel HDF5), so the file is the one a
+  // single process writes; load_state reads the whole file on every process, which keeps
+  // its share: a checkpoint of N processes resumes on any number. One process: save_state
+  // writes everything and save_state_rows does nothing.
   void save_state(Hdf5File& file, const std::string& group) const;
   void save_state(Hdf5File* file, const std::string& group) const;
+  void save_state_rows(const std::string& path, const std::string& group) const;
   void load_state(const Hdf5File& file, const std::string& group);
 
   // Set-up of the initial state (initial velocities, prestress); call before the first

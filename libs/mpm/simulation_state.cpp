@@ -126,27 +126,37 @@ void check_bucket_table(const std::string& file, const std::string& dataset, con
 void Simulation::save_state(Hdf5File& f, const std::string& g) const { save_state(&f, g); }
 
 void Simulation::save_state(Hdf5File* f, const std::string& g) const {
-  // Several processes: every process's buckets in the one-process layout, on rank 0
-  // (bucket_layout.hpp); the file is the one a single process writes at this step.
+  // Several processes: the particle datasets and the bucket tables are laid out here at their
+  // one-process size, and every process writes its rows of them once the file is closed
+  // (save_state_rows): the file is the one a single process writes at this step.
   const Domain& domain = context_->domain;
   const bool needs_sort = domain.reduce_max(state_.needs_sort ? 1 : 0) > 0;
-  const bool gathered = domain.process_count() > 1;
-  BucketedParticles whole;
-  if (gathered) whole = domain.gather_buckets(state_.particles, state_.buckets);
+  const bool several = domain.process_count() > 1;
+  const BucketPlacement placement = domain.bucket_placement(state_.buckets, state_.particles.size());
+  const std::vector<uint8_t> present = domain.fields_present(state_.particles);
   if (!f) return;
-  const Particles& particles_out = gathered ? whole.particles : state_.particles;
   CheckpointWriter out(*f, g);
   out.strings("bodies", names_of(bodies_));
   if (!rigid_bodies_.empty()) out.strings("rigid_bodies", names_of(rigid_bodies_));
 
   CheckpointWriter particles = out.sub("particles");
-  for_each_particle_field(particles_out, [&](const ParticleField& field, const auto& values, const auto&) {
-    if (!(field.optional && values.empty())) particles.rows(field.name, values);
+  size_t field = 0;
+  for_each_particle_field(state_.particles, [&](const ParticleField& info, const auto& values, const auto&) {
+    if (!present[field++]) return;
+    if (several)
+      particles.reserve_rows<typename std::decay_t<decltype(values)>::value_type>(info.name, placement.particles);
+    else
+      particles.rows(info.name, values);
   });
 
   CheckpointWriter sorting = out.sub("buckets");
-  sorting.integers("buckets", bucket_rows(gathered ? whole.tables.buckets : state_.buckets.buckets()), bucket_row_width);
-  sorting.integers("runs", run_rows(gathered ? whole.tables.runs : state_.buckets.runs()), run_row_width);
+  if (several) {
+    sorting.reserve_integers("buckets", placement.buckets, bucket_row_width);
+    sorting.reserve_integers("runs", placement.runs, run_row_width);
+  } else {
+    sorting.integers("buckets", bucket_rows(state_.buckets.buckets()), bucket_row_width);
+    sorting.integers("runs", run_rows(state_.buckets.runs()), run_row_width);
+  }
   sorting.integer("needs_sort", needs_sort);
 
   CheckpointWriter solver = out.sub("solver");
@@ -162,6 +172,30 @@ void Simulation::save_state(Hdf5File* f, const std::string& g) const {
     CheckpointWriter own = boundaries.sub(checkpoint_name(b));
     std::visit([&](const auto& boundary) { boundary.save(own); }, b);
   }
+}
+
+void Simulation::save_state_rows(const std::string& path, const std::string& g) const {
+  const Domain& domain = context_->domain;
+  if (domain.process_count() == 1) return;  // save_state wrote them
+  const size_t n = state_.particles.size();
+  const OneProcessRows rows =
+      one_process_rows({state_.buckets.buckets(), state_.buckets.runs()}, domain.bucket_placement(state_.buckets, n), n);
+  const std::vector<uint8_t> present = domain.fields_present(state_.particles);
+  domain.write_shared_rows(path, [&](Hdf5File& file) {
+    CheckpointWriter particles = CheckpointWriter::existing(file, g + "/particles");
+    const bool writes = !rows.particle_blocks.empty();  // every process its rows, in one collective write each
+    size_t field = 0;
+    for_each_particle_field(state_.particles, [&](const ParticleField& f, const auto& values, const auto&) {
+      if (!present[field++]) return;
+      if (writes)
+        particles.write_rows(f.name, values, rows.particle_blocks);
+      else
+        particles.write_rows(f.name, std::decay_t<decltype(values)>{}, {});
+    });
+    CheckpointWriter sorting = CheckpointWriter::existing(file, g + "/buckets");
+    sorting.write_rows("buckets", rows.buckets, rows.bucket_blocks);
+    sorting.write_rows("runs", rows.runs, rows.run_blocks);
+  });
 }
 
 void Simulation::load_state(const Hdf5File& f, const std::string& g) {

@@ -56,25 +56,47 @@ SnapshotWriter::SnapshotWriter(std::string run_dir, Provenance provenance, std::
   write_index(frames_, xdmf_path());
 }
 
-void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& path) const {
-  const size_t n = s.size();
+namespace {
+// The per-point datasets of a snapshot, each with its values per point; visit(name, values, columns).
+template <class Snapshot, class Visit>
+void for_each_point_dataset(Snapshot& s, Visit&& visit) {
+  visit("/particles/position", s.position, 3);
+  visit("/particles/velocity", s.velocity, 3);
+  visit("/particles/stress", s.stress, 6);
+  visit("/particles/von_mises", s.von_mises, 1);
+  visit("/particles/J", s.jacobian, 1);
+  visit("/particles/body", s.body, 1);
+  for (auto& scalar : s.extra_scalars) visit("/particles/" + scalar.name, scalar.values, 1);
+}
+}  // namespace
+
+void write_snapshot_rows(Hdf5File& file, const ParticleSnapshot& block, size_t first) {
+  const std::vector<RowBlock> rows{{first, block.size()}};
+  for_each_point_dataset(block, [&](const std::string& name, const auto& values, size_t) {
+    file.write_rows(name, values, rows);
+  });
+}
+
+void SnapshotWriter::write_file(const ParticleSnapshot& s, const std::string& path, size_t total,
+                                const std::function<void(const std::string&)>& fill_rows) const {
   OutputFile out(path, path);
   {
     Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
     write_provenance(file, provenance_);
-    file.write("/particles/position", s.position, {n, 3});
-    file.write("/particles/velocity", s.velocity, {n, 3});
-    file.write("/particles/stress", s.stress, {n, 6});
-    file.write("/particles/von_mises", s.von_mises, {n});
-    file.write("/particles/J", s.jacobian, {n});
-    file.write("/particles/body", s.body, {n});
-    for (const auto& scalar : s.extra_scalars) file.write("/particles/" + scalar.name, scalar.values, {n});
+    for_each_point_dataset(s, [&](const std::string& name, const auto& values, size_t columns) {
+      const std::vector<size_t> dims = columns == 1 ? std::vector<size_t>{total} : std::vector<size_t>{total, columns};
+      if (fill_rows)
+        file.reserve<typename std::decay_t<decltype(values)>::value_type>(name, dims);
+      else
+        file.write(name, values, dims);
+    });
     file.write_strings("/particles/body_names", s.body_names);
     file.set_attribute("/particles", "time", s.time);
     file.set_attribute("/particles", "step", int64_t(s.step));
     file.set_attribute("/particles/stress", "components", "xx xy xz yy yz zz");
     file.close();
   }
+  if (fill_rows) fill_rows(out.temp_path());
   out.commit();
 }
 
@@ -90,20 +112,28 @@ std::vector<std::string> extra_scalar_names(const ParticleSnapshot& s) {
 }
 }  // namespace
 
-std::string SnapshotWriter::write(const ParticleSnapshot& s) {
+std::string SnapshotWriter::write(const ParticleSnapshot& s) { return add_frame(s, s.size(), nullptr); }
+
+std::string SnapshotWriter::write_shared(const ParticleSnapshot& block, size_t total,
+                                         const std::function<void(const std::string&)>& fill_rows) {
+  return add_frame(block, total, fill_rows);
+}
+
+std::string SnapshotWriter::add_frame(const ParticleSnapshot& s, size_t total,
+                                      const std::function<void(const std::string&)>& fill_rows) {
   char name[32];
   std::snprintf(name, sizeof name, "snap_%06lld.h5", static_cast<long long>(s.step));
   const std::string relative = std::string("snapshots/") + name;
-  write_file(s, run_dir_ + "/" + relative);
+  write_file(s, run_dir_ + "/" + relative, total, fill_rows);
   if (!frames_.empty() && frames_.back().step == s.step) frames_.pop_back();
-  frames_.push_back({relative, s.time, s.step, s.size(), extra_scalar_names(s)});
+  frames_.push_back({relative, s.time, s.step, total, extra_scalar_names(s)});
   write_index(frames_, xdmf_path());
   return run_dir_ + "/" + relative;
 }
 
 std::string SnapshotWriter::write_separate(const ParticleSnapshot& s, const std::string& stem) {
   const std::string relative = "snapshots/" + stem + ".h5";
-  write_file(s, run_dir_ + "/" + relative);
+  write_file(s, run_dir_ + "/" + relative, s.size(), nullptr);
   write_index({{relative, s.time, s.step, s.size(), extra_scalar_names(s)}}, run_dir_ + "/" + stem + ".xmf");
   return run_dir_ + "/" + relative;
 }

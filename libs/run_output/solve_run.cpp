@@ -148,7 +148,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   RunLog log(writer ? run_dir + "/log.txt" : "", options_.resume);
   if (several)
     log.line("processes: " + std::to_string(sim.domain().process_count()) +
-             " (MPI), rank 0 writes (docs/cluster.md)");
+             " (MPI); rank 0 writes the run directory, every process its rows of each snapshot and "
+             "checkpoint (parallel HDF5; docs/cluster.md)");
   if (options_.resume)
     log.line("resumed from checkpoint.h5 at step " + std::to_string(sim.step_count()) + ", t = " +
              format_number("%.9g", sim.time()) + " s (" + format_number("%.1f", wall_before) + " s of wall time before)");
@@ -212,9 +213,21 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     if (series_writer) series_writer->save();
   };
   auto write_snapshot = [&](const mpm::Simulation& s) {
-    const ParticleSnapshot snapshot = several ? solver_snapshot(s, s.domain().gather_particles(s.particles()))
-                                              : solver_snapshot(s);
-    if (snapshot_writer) snapshot_writer->write(snapshot);
+    if (!several) {
+      snapshot_writer->write(solver_snapshot(s));
+      return;
+    }
+    // One file, every process writing its block of the points (in id order) into it at once.
+    size_t first = 0;
+    const mpm::Particles mine = s.domain().particles_in_id_block(s.particles(), particles, first);
+    const ParticleSnapshot block = solver_snapshot(s, mine, first);
+    auto fill_rows = [&](const std::string& path) {
+      s.domain().write_shared_rows(path, [&](Hdf5File& file) { write_snapshot_rows(file, block, first); });
+    };
+    if (snapshot_writer)
+      snapshot_writer->write_shared(block, particles, fill_rows);
+    else
+      fill_rows("");
   };
   if (!options_.resume) {
     append_row(sim, sim.last_diagnostics());
@@ -225,8 +238,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   // Checkpoints: the solver state and what the outputs need to continue.
   double last_checkpoint = 0;
   auto save_checkpoint = [&](double wall) {
-    if (!writer) {  // another process: its part of the gathered state (collective)
+    if (!writer) {  // another process: its rows of the state, into rank 0's file (collective)
       sim.save_state(nullptr, "/state");
+      sim.save_state_rows("", "/state");
       last_checkpoint = wall;
       return;
     }
@@ -255,6 +269,7 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
       file.set_attribute("/output", "time", sim.time());
       file.close();
     }
+    sim.save_state_rows(out.temp_path(), "/state");  // several processes: each its particles' rows
     out.commit();
     last_checkpoint = wall;
   };

@@ -95,7 +95,7 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
 
 ParticleSnapshot solver_snapshot(const mpm::Simulation& sim) { return solver_snapshot(sim, sim.particles()); }
 
-ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& p) {
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& p, size_t first_id) {
   const size_t n = p.size();
   ParticleSnapshot s;
   s.step = sim.step_count();
@@ -105,7 +105,7 @@ ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particle
   // Voigt (xx yy zz yz xz xy) to XDMF Tensor6 (xx xy xz yy yz zz).
   constexpr int tensor6_from_voigt[6] = {0, 5, 4, 1, 3, 2};
   for (size_t q = 0; q < n; ++q) {
-    const size_t i = p.id[q];
+    const size_t i = p.id[q] - first_id;
     for (int k = 0; k < 3; ++k) {
       s.position[3 * i + k] = p.position[q][k];
       s.velocity[3 * i + k] = float(p.velocity[q][k]);
@@ -120,7 +120,7 @@ ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particle
     if constexpr (std::is_same_v<std::decay_t<decltype(values)>, std::vector<mpm::Real>>) {
       if (!field.snapshot) return;
       ParticleSnapshot::Scalar scalar{field.name, std::vector<float>(n)};
-      for (size_t q = 0; q < n; ++q) scalar.values[p.id[q]] = float(values[q]);
+      for (size_t q = 0; q < n; ++q) scalar.values[p.id[q] - first_id] = float(values[q]);
       s.extra_scalars.push_back(std::move(scalar));
     }
   });

@@ -52,7 +52,8 @@ class SolverSeries {
 
 // The particles in their original point order (the solver re-sorts them), SI.
 ParticleSnapshot solver_snapshot(const mpm::Simulation& sim);
-// The same of `particles` (all processes' particles, gathered; mpm/domain.hpp) at sim's step.
-ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& particles);
+// The same of `particles` at sim's step, whose ids are first_id, first_id + 1, … (in any
+// order): a process's block of the points (mpm/domain.hpp, particles_in_id_block).
+ParticleSnapshot solver_snapshot(const mpm::Simulation& sim, const mpm::Particles& particles, size_t first_id = 0);
 
 }  // namespace latmpm

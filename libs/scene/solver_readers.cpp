@@ -157,6 +157,8 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   s.predictor = solver.boolean("predictor", s.predictor);
   s.max_increment_growth = solver.number("max_increment_growth", s.max_increment_growth);
   if (!(s.max_increment_growth >= 1)) solver.fail("max_increment_growth", "must be at least 1 (1: fixed increments)");
+  s.krylov_iterations = int(solver.integer("krylov_iterations", s.krylov_iterations));
+  if (s.krylov_iterations < 0) solver.fail("krylov_iterations", "must be at least 0 (0: every Newton step factorises)");
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

@@ -79,13 +79,13 @@ void log_phase_times(RunLog& log, const statics::PhaseTime& set_up, const static
                      const statics::SolverTimes& solver, const statics::PhaseTime& check,
                      const statics::PhaseTime& output, const statics::PhaseTime& path) {
   statics::PhaseTime rest = path;
-  for (const statics::PhaseTime* t : {&assembly, &solver.analyse, &solver.factorise, &solver.solve, &output})
+  for (const statics::PhaseTime* t : {&assembly, &solver.analyse, &solver.factorise, &solver.solve, &solver.krylov, &output})
     rest.wall -= t->wall, rest.cpu -= t->cpu;
   rest.calls = 1;
   log.line("time (wall/CPU): " + statics::describe("set-up (points, band, pattern)", set_up) + ", " +
            statics::describe("assembly", assembly) + ", " + statics::describe("analysis", solver.analyse) + ", " +
            statics::describe("factorisation", solver.factorise) + ", " + statics::describe("solve", solver.solve) +
-           ", " + statics::describe("forces, energy, line search", rest) + ", " + statics::describe("output", output) +
+           ", " + statics::describe("Krylov (CG on the last factor)", solver.krylov) + ", " + statics::describe("forces, energy, line search", rest) + ", " + statics::describe("output", output) +
            "; of these the stability check " + statics::describe("", check).substr(1));
 }
 }  // namespace
@@ -102,6 +102,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   const statics::LinearSolverKind solver_kind = scene.solver.statics.linear_solver;
   statics::NewtonOptions newton;
   newton.tolerance = scene.solver.statics.tolerance;
+  newton.krylov_iterations = scene.solver.statics.krylov_iterations;
 
   std::filesystem::create_directories(run_dir);
   {
@@ -154,7 +155,8 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     const std::string line = "increment " + std::to_string(step) + ": travel " + format_number("%.6g", pt.travel) +
                              " m, load " + format_number("%.6g", pt.load) + " N, Newton " +
                              std::to_string(pt.newton_iterations) + (pt.predicted ? " from the predictor" : "") + " (" +
-                             std::to_string(pt.true_tangent_steps) + " true tangent), linear " +
+                             std::to_string(pt.true_tangent_steps) + " true tangent, " + std::to_string(pt.krylov_steps) +
+                             " Krylov), linear " +
                              std::to_string(pt.linear_iterations) + " (last residual " +
                              format_number("%.1e", pt.linear_residual) + "), residual " + format_number("%.2e", pt.residual) +
                              ", min J " + format_number("%.4f", pt.min_jacobian) + (pt.stable ? "" : ", UNSTABLE");

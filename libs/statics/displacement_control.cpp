@@ -99,6 +99,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.newton_iterations = r.iterations;
     point.true_tangent_steps = r.true_tangent_steps;
     point.linear_iterations = r.linear_iterations;
+    point.krylov_steps = r.krylov_steps;
     point.linear_residual = r.linear_residual;
     point.residual = r.residual.back();
     point.min_jacobian = r.min_jacobian;

@@ -54,6 +54,7 @@ struct PathPoint {
   bool predicted = false;     // converged from the predictor's start
   int true_tangent_steps = 0; // of the converged solve: steps with the unprojected Hessian
   int linear_iterations = 0;
+  int krylov_steps = 0;       // steps solved by CG preconditioned with an earlier factor
   Real linear_residual = 0;  // ‖K d − r‖ / ‖r‖ of the last linear solve
   Real residual = 0;        // final relative residual
   Real min_jacobian = 1;

@@ -70,7 +70,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
                            residual <= options.retry_true_tangent_after * true_tangent_failed_at);
     // An iterative solver builds its preconditioner for an indefinite true tangent too: its
     // direction is then taken only when it solved and descends, else the projected one.
-    bool factorized = false;
+    bool factorized = false, krylov_solved = false;
     Vector rhs, d;
     LinearSolveStats stats;
     for (const bool projected : {false, true}) {
@@ -87,10 +87,31 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       constrain_rows_and_columns(H, fixed, diagonal);
       // The shift fixes the zero-energy modes of the point quadrature (docs/statics.md):
       // negligible, and raised only while a projected factorisation fails.
-      for (Real shift = options.shift; shift <= 1e-2 && !factorized; shift *= 1e3) {
-        for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
+      Real shift = options.shift;
+      for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
+      // A Krylov step: CG preconditioned by the factor the solver holds. A true-tangent
+      // direction is kept only where it descends (the matrix may be indefinite).
+      if (options.krylov_iterations > 0 && solver.has_factor()) {
+        const Real forcing =
+            boundary_moves ? options.krylov_forcing
+                           : std::clamp(Real(0.1) * residual, Real(1e-12), options.krylov_forcing);
+        Vector dk;
+        if (solver.solve_preconditioned(H, rhs, forcing, options.krylov_iterations, dk, stats) &&
+            (projected || g.dot(free_part(dk, fixed)) < 0)) {
+          d = std::move(dk);
+          if (!projected) ++report.true_tangent_steps;
+          ++report.krylov_steps;
+          report.last_step_true_tangent = false;  // not factorised: says nothing of definiteness
+          krylov_solved = true;
+          break;
+        }
+        report.linear_iterations += stats.iterations;  // spent before the factorisation
+      }
+      for (;;) {
         factorized = solver.factorize(H);
-        if (!projected) break;
+        if (factorized || !projected || shift * 1e3 > 1e-2) break;
+        shift *= 1e3;
+        for (Eigen::Index i = 0; i < H.rows(); ++i) H.coeffRef(i, i) += shift * diagonal;
       }
       if (factorized && !projected) {
         try {
@@ -109,7 +130,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       }
       if (!projected) true_tangent_failed_at = residual;
     }
-    if (!factorized) {
+    if (!factorized && !krylov_solved) {
       report.failure = "the projected Hessian is singular (a part of the body is not held)";
       break;
     }

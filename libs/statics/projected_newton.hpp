@@ -41,6 +41,14 @@ struct NewtonOptions {
   // Where the true Hessian was indefinite, it is tried again once the residual has fallen
   // by this factor (0: never again in this solve).
   Real retry_true_tangent_after = 0.1;
+  // Krylov steps (modified Newton with Krylov acceleration): where a direct solver holds a
+  // factor of an earlier positive definite matrix (an earlier Newton step's, or the last
+  // increment's stability check), each step's system is first solved by CG preconditioned
+  // with that factor, at most this many iterations, to the forcing tolerance
+  // min(krylov_forcing, 0.1 × relative residual) (Eisenstat–Walker-like: superlinear
+  // convergence); only where that fails is the matrix factorised. 0: every step factorises.
+  int krylov_iterations = 0;
+  Real krylov_forcing = 1e-2;
 };
 
 struct NewtonReport {
@@ -53,6 +61,7 @@ struct NewtonReport {
   bool last_step_true_tangent = false;  // the last step's Hessian was the true one, factorised
                                         // (a direct solver: positive definite)
   int linear_iterations = 0;      // summed over the steps (CG, AMG; 1 per direct solve)
+  int krylov_steps = 0;           // steps solved by CG preconditioned with an earlier factor
   Real linear_residual = 0;       // relative residual of the last linear solve
   Real min_jacobian = 1;          // smallest det F_p at the end
   std::string failure;            // why it stopped without converging

@@ -12,6 +12,7 @@
 #include "core/number_text.hpp"
 #include "mpm/name_table.hpp"
 #include "statics/cholmod_direct.hpp"
+#include "statics/factor_preconditioner.hpp"
 #include "statics/hypre_amg.hpp"
 
 namespace latmpm::statics {
@@ -35,6 +36,7 @@ LinearSolverKind parse_linear_solver(const std::string& name, const std::string&
 struct SparseSolver::Impl {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<Real>> cg;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, FactorPreconditioner> factor_cg;
   CholmodDirect cholmod;
   std::unique_ptr<HypreAmg> amg;  // made on first use: it initialises MPI
   std::vector<Vec3> node_positions;
@@ -55,6 +57,12 @@ void SparseSolver::set_node_positions(std::vector<Vec3> positions) { impl_->node
 SparseSolver::~SparseSolver() = default;
 
 bool SparseSolver::factorize(const SparseMatrix& K) {
+  const bool factorized = factorize_matrix(K);
+  factor_valid_ = factorized && is_direct();  // a failed factorisation leaves a partial factor
+  return factorized;
+}
+
+bool SparseSolver::factorize_matrix(const SparseMatrix& K) {
   Impl& s = *impl_;
   s.matrix = &K;
   if (used_ == LinearSolverKind::automatic) {  // CHOLMOD's symbolic analysis says how big L gets
@@ -102,6 +110,25 @@ bool SparseSolver::factorize(const SparseMatrix& K) {
     case LinearSolverKind::automatic: break;
   }
   return false;
+}
+
+bool SparseSolver::solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance, int max_iterations,
+                                        Vector& x, LinearSolveStats& stats) {
+  if (!factor_valid_) return false;
+  Impl& s = *impl_;
+  PhaseTimer timer(times_.krylov);
+  s.factor_cg.preconditioner().set([this](const Vector& r) {
+    Impl& t = *impl_;
+    return used_ == LinearSolverKind::ldlt ? Vector(t.ldlt.solve(r)) : t.cholmod.solve(r);
+  });
+  s.factor_cg.setTolerance(tolerance);
+  s.factor_cg.setMaxIterations(max_iterations);
+  s.factor_cg.compute(K);
+  x = s.factor_cg.solve(b);
+  stats.iterations = int(s.factor_cg.iterations());
+  const Real norm_b = b.norm();  // the true residual, not CG's recurrence
+  stats.relative_residual = norm_b > 0 ? (K * x - b).norm() / norm_b : Real(0);
+  return s.factor_cg.info() == Eigen::Success && x.allFinite();
 }
 
 std::string SparseSolver::describe() const {

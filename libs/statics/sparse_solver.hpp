@@ -25,6 +25,7 @@ struct SolverTimes {
   PhaseTime analyse;    // ordering and symbolic analysis (once per pattern; LDLT, CHOLMOD)
   PhaseTime factorise;  // numeric factorisations, or the AMG / incomplete-Cholesky set-ups
   PhaseTime solve;      // triangular solves or iterations
+  PhaseTime krylov;     // CG preconditioned by an earlier factor (solve_preconditioned)
 };
 
 struct LinearSolveStats {
@@ -59,15 +60,25 @@ class SparseSolver {
   // Solves K x = b with the last factorisation; throws NumericalError when CG does not
   // reach its tolerance.
   Vector solve(const Vector& b, LinearSolveStats& stats);
+  // Whether the last factorize() of a direct solver succeeded: its factor (of a positive
+  // definite matrix) can precondition solve_preconditioned.
+  bool has_factor() const { return factor_valid_; }
+  // Solves K x = b by conjugate gradients preconditioned with the last factor (of an
+  // earlier, nearby matrix; factor_preconditioner.hpp) to ‖K x − b‖ ≤ tolerance ‖b‖. False
+  // (x unusable) when there is no factor or CG does not get there in max_iterations.
+  bool solve_preconditioned(const SparseMatrix& K, const Vector& b, Real tolerance, int max_iterations, Vector& x,
+                            LinearSolveStats& stats);
 
  private:
   struct Impl;
+  bool factorize_matrix(const SparseMatrix& K);
   LinearSolverKind kind_;
   LinearSolverKind used_;  // kind_, or what "auto" chose
   Real iterative_tolerance_;
   int iterative_max_iterations_;
   double factor_memory_budget_;
   SolverTimes times_;
+  bool factor_valid_ = false;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -30,6 +30,10 @@ struct StaticSettings {
   // Newton converges fast (1: fixed increments; displacement_control.hpp). A grown step can
   // step over a shallow load maximum (docs/statics.md), so 1 stays the default.
   Real max_increment_growth = 1;
+  // Krylov steps: CG preconditioned by the last factor, at most this many iterations, before
+  // a Newton step refactorises (NewtonOptions::krylov_iterations; 0: every step factorises).
+  // 20: on the paper-size lattice a CG iteration costs ~1/30 of a factorisation (docs/statics.md).
+  int krylov_iterations = 20;
   Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
 };
 

@@ -53,6 +53,44 @@ TEST_CASE("HDF5 datasets and attributes round-trip exactly", "[core][hdf5]") {
   CHECK_THROWS_WITH(f.double_attribute("/points", "missing"), Catch::Contains("missing attribute"));
 }
 
+TEST_CASE("A dataset laid out first and written in blocks of rows equals one written whole", "[core][hdf5]") {
+  const std::string path = scratch("rows.h5");
+  // Five rows of three; two "processes" write rows {0, 3, 4} and {1, 2}, as blocks.
+  std::vector<double> whole(15);
+  for (size_t i = 0; i < whole.size(); ++i) whole[i] = 0.1 * double(i) + 1e-17;
+  const std::vector<int64_t> ids{10, 11, 12, 13, 14};
+  {
+    Hdf5File f(path, Hdf5File::Mode::create);
+    f.reserve<double>("/p/position", {5, 3});
+    f.reserve<int64_t>("/p/id", {5});
+    f.reserve<int64_t>("/p/none", {0, 7});
+    f.close();
+  }
+  {
+    Hdf5File f(path, Hdf5File::Mode::read_write);
+    const std::vector<double> first(whole.begin(), whole.begin() + 3), rest(whole.begin() + 9, whole.end());
+    std::vector<double> mine = first;
+    mine.insert(mine.end(), rest.begin(), rest.end());
+    f.write_rows("/p/position", mine, {{0, 1}, {3, 2}});
+    f.write_rows("/p/position", std::vector<double>(whole.begin() + 3, whole.begin() + 9), {{1, 2}});
+    f.write_rows("/p/id", std::vector<int64_t>{10, 13, 14}, {{0, 1}, {3, 2}});
+    f.write_rows("/p/id", std::vector<int64_t>{11, 12}, {{1, 2}});
+    f.write_rows("/p/none", std::vector<int64_t>{}, {});  // a process with nothing to write
+    // Rows must come in file order, within the dataset, and match the data.
+    CHECK_THROWS_WITH(f.write_rows("/p/id", std::vector<int64_t>{1, 2}, {{3, 1}, {0, 1}}),
+                      Catch::Contains("out of order"));
+    CHECK_THROWS_WITH(f.write_rows("/p/id", std::vector<int64_t>{1, 2}, {{4, 2}}), Catch::Contains("beyond"));
+    CHECK_THROWS(f.write_rows("/p/id", std::vector<int64_t>{1}, {{0, 2}}));
+    f.close();
+  }
+  Hdf5File f(path, Hdf5File::Mode::read);
+  std::vector<size_t> dims;
+  CHECK(f.read_doubles("/p/position", &dims) == whole);
+  CHECK(dims == std::vector<size_t>{5, 3});
+  CHECK(f.read_int64("/p/id") == ids);
+  CHECK(f.shape("/p/none") == std::vector<size_t>{0, 7});
+}
+
 TEST_CASE("Opening a non-HDF5 or missing file is an input error naming it", "[core][hdf5]") {
   const std::string path = scratch("not-hdf5.h5");
   { std::ofstream(path) << "solid nothing\n"; }

@@ -1,5 +1,6 @@
-// The bucket layout handed between process counts (bucket_layout.hpp): a checkpoint of N
-// processes is the one-process layout, and a process resuming it keeps whole buckets.
+// The bucket layout handed between process counts (bucket_layout.hpp): the rows N processes
+// write of a checkpoint make the one-process layout, and a process resuming it keeps whole
+// buckets.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -40,7 +41,7 @@ bool same_tables(const BucketTables& a, const std::vector<Bucket>& buckets, cons
 }
 }  // namespace
 
-TEST_CASE("Buckets split among processes and merged again give the one-process layout", "[mpm][mpi]") {
+TEST_CASE("Buckets split among processes, each writing its rows, give the one-process layout", "[mpm][mpi]") {
   ParticleBuckets sorted;
   const Particles ps = sorted_particles(sorted);
   REQUIRE(sorted.buckets().size() == 12);
@@ -52,35 +53,70 @@ TEST_CASE("Buckets split among processes and merged again give the one-process l
   std::sort(counts.begin(), counts.end());
   const BucketPartition partition = partition_buckets(counts, 3);
   std::vector<BucketTables> parts;
-  std::vector<size_t> particle_counts;
-  std::vector<uint32_t> concatenated;  // the parts' particles one after the other (their indices in ps)
-  for (int q = 2; q >= 0; --q) {  // in reverse, so that the merge must reorder
+  std::vector<std::vector<uint32_t>> held_particles;  // each part's particles (their indices in ps), in its order
+  std::vector<BucketSize> all;                        // what the processes tell one another
+  for (int q = 2; q >= 0; --q) {  // in reverse, so that nothing follows from the parts' order
     BucketTables part = whole;
     std::vector<uint8_t> keep(whole.buckets.size());
     for (size_t b = 0; b < keep.size(); ++b) keep[b] = partition.owner(whole.buckets[b].coord) == q;
     const std::vector<uint8_t> held = select_buckets(part, keep, ps.size());
-    size_t count = 0;
+    std::vector<uint32_t> mine;
     for (uint32_t p = 0; p < ps.size(); ++p)
-      if (held[p]) concatenated.push_back(p), ++count;
-    REQUIRE(count > 0);
+      if (held[p]) mine.push_back(p);
+    REQUIRE(!mine.empty());
     // The part's tables index its own particles: each run of bucket b is that body's particles in it.
     for (const Bucket& b : part.buckets)
       for (uint32_t r = b.run_begin; r < b.run_end; ++r)
         for (uint32_t i = part.runs[r].begin; i < part.runs[r].end; ++i) {
-          const uint32_t p = concatenated[concatenated.size() - count + i];
-          CHECK(ps.body[p] == part.runs[r].body);
-          CHECK(bucket_of(ps.position[p], 2.0) == b.coord);
+          CHECK(ps.body[mine[i]] == part.runs[r].body);
+          CHECK(bucket_of(ps.position[mine[i]], 2.0) == b.coord);
         }
+    const auto sizes = bucket_sizes(part.buckets);
+    all.insert(all.end(), sizes.begin(), sizes.end());
     parts.push_back(part);
-    particle_counts.push_back(count);
+    held_particles.push_back(mine);
   }
-  const MergedLayout merged = merge_bucket_layouts(parts, particle_counts);
-  CHECK(same_tables(merged.tables, whole.buckets, whole.runs));
-  REQUIRE(merged.order.size() == ps.size());
-  // The merged order puts every particle back where one process has it.
+  // Each part writes its rows into the one-process tables and particle array.
+  std::vector<int64_t> bucket_table(whole.buckets.size() * bucket_row_width, -1), run_table(whole.runs.size() * run_row_width, -1);
+  std::vector<int64_t> particle_at(ps.size(), -1);  // which particle of ps each row receives
+  for (size_t q = 0; q < parts.size(); ++q) {
+    const BucketPlacement placement = place_buckets(all, parts[q].buckets, 0);
+    CHECK(placement.buckets == whole.buckets.size());
+    CHECK(placement.particles == ps.size());
+    CHECK(placement.runs == whole.runs.size());
+    const OneProcessRows rows = one_process_rows(parts[q], placement, held_particles[q].size());
+    auto scatter = [](const std::vector<int64_t>& values, size_t width, const std::vector<latmpm::RowBlock>& blocks,
+                      std::vector<int64_t>& table) {
+      size_t at = 0;
+      for (const auto& block : blocks)
+        for (size_t row = block.first; row < block.first + block.count; ++row)
+          for (size_t c = 0; c < width; ++c) table.at(row * width + c) = values.at(at++);
+      CHECK(at == values.size());
+    };
+    scatter(rows.buckets, bucket_row_width, rows.bucket_blocks, bucket_table);
+    scatter(rows.runs, run_row_width, rows.run_blocks, run_table);
+    std::vector<int64_t> mine(held_particles[q].begin(), held_particles[q].end());
+    scatter(mine, 1, rows.particle_blocks, particle_at);
+  }
+  CHECK(bucket_table == bucket_rows(whole.buckets));
+  CHECK(run_table == run_rows(whole.runs));
+  // Every particle lands where one process has it.
   bool identity = true;
-  for (size_t i = 0; i < ps.size(); ++i) identity = identity && concatenated[merged.order[i]] == i;
+  for (size_t i = 0; i < ps.size(); ++i) identity = identity && particle_at[i] == int64_t(i);
   CHECK(identity);
+}
+
+TEST_CASE("Particles saved before their first sort are one block, written by one process", "[mpm][mpi]") {
+  const BucketTables none;
+  const BucketPlacement placement = place_buckets({}, none.buckets, 40);
+  CHECK(placement.particles == 40);
+  const OneProcessRows rows = one_process_rows(none, placement, 40);
+  REQUIRE(rows.particle_blocks.size() == 1);
+  CHECK(rows.particle_blocks[0].first == 0);
+  CHECK(rows.particle_blocks[0].count == 40);
+  BucketPlacement other = placement;
+  other.writes = false;  // every process holds every particle: rank 0 alone writes them
+  CHECK(one_process_rows(none, other, 40).particle_blocks.empty());
 }
 
 TEST_CASE("Bucket and run tables survive their int64 rows", "[mpm][mpi]") {

@@ -43,6 +43,17 @@ ParticleSnapshot make_snapshot(size_t n, int64_t step, double time) {
   return s;
 }
 
+// Every per-point array and the body names equal.
+void check_same_points(const ParticleSnapshot& back, const ParticleSnapshot& s) {
+  CHECK(back.position == s.position);
+  CHECK(back.velocity == s.velocity);
+  CHECK(back.stress == s.stress);
+  CHECK(back.von_mises == s.von_mises);
+  CHECK(back.jacobian == s.jacobian);
+  CHECK(back.body == s.body);
+  CHECK(back.body_names == s.body_names);
+}
+
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
   std::stringstream ss;
@@ -59,13 +70,7 @@ TEST_CASE("A snapshot reads back as written, with provenance", "[run_output]") {
   const std::string path = writer.write(s);
   CHECK(path == dir + "/snapshots/snap_000040.h5");
   ParticleSnapshot back = read_snapshot(path);
-  CHECK(back.position == s.position);
-  CHECK(back.velocity == s.velocity);
-  CHECK(back.stress == s.stress);
-  CHECK(back.von_mises == s.von_mises);
-  CHECK(back.jacobian == s.jacobian);
-  CHECK(back.body == s.body);
-  CHECK(back.body_names == s.body_names);
+  check_same_points(back, s);
   CHECK(back.step == 40);
   CHECK(back.time == 2.5e-3);
   CHECK(read_provenance(Hdf5File(path, Hdf5File::Mode::read)).tool == "latmpm-solve");
@@ -113,4 +118,35 @@ TEST_CASE("A new run in the same directory starts from no snapshots", "[run_outp
   CHECK_FALSE(fs::exists(dir + "/snapshots/snap_000500.h5"));
   CHECK_FALSE(fs::exists(second.xdmf_path()));
   CHECK(fs::exists(dir + "/snapshots/notes.txt"));
+}
+
+TEST_CASE("A snapshot whose points are written in blocks equals the one written whole", "[run_output]") {
+  // As several MPI processes write one: the file laid out for all points, each block of
+  // points written into it afterwards (here both blocks by this process).
+  const ParticleSnapshot whole = make_snapshot(7, 20, 1e-3);
+  auto block = [&](size_t first, size_t count) {
+    ParticleSnapshot b = make_snapshot(count, 20, 1e-3);
+    for (size_t i = 0; i < count; ++i) {
+      std::copy_n(&whole.position[3 * (first + i)], 3, &b.position[3 * i]);
+      std::copy_n(&whole.velocity[3 * (first + i)], 3, &b.velocity[3 * i]);
+      std::copy_n(&whole.stress[6 * (first + i)], 6, &b.stress[6 * i]);
+      b.von_mises[i] = whole.von_mises[first + i], b.jacobian[i] = whole.jacobian[first + i], b.body[i] = whole.body[first + i];
+    }
+    return b;
+  };
+  const ParticleSnapshot first = block(0, 3), second = block(3, 4);
+  const Provenance provenance{"latmpm-solve", "0", "cmd", {}, "t", {}};
+  SnapshotWriter one(fresh_run_dir("whole"), provenance), parts(fresh_run_dir("blocks"), provenance);
+  const ParticleSnapshot back_whole = read_snapshot(one.write(whole));
+  const std::string path = parts.write_shared(first, 7, [&](const std::string& staged) {
+    Hdf5File file(staged, Hdf5File::Mode::read_write);
+    write_snapshot_rows(file, first, 0);
+    write_snapshot_rows(file, second, 3);
+    file.close();
+  });
+  const ParticleSnapshot back = read_snapshot(path);
+  check_same_points(back, back_whole);
+  CHECK(back.step == 20);
+  REQUIRE(parts.frames().size() == 1);
+  CHECK(parts.frames()[0].points == 7);  // the series index counts every process's points
 }
