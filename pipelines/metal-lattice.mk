@@ -4,8 +4,8 @@
 #   J2 plasticity (paper B Eq. 9-13), between a fixed base and a platen that follows a
 #   load-unload schedule (down at 16 m/s, back up past its start: motion = "scheduled"), both
 #   rigid half-spaces in penalty contact with Coulomb friction mu = 0.3 (QUICK also mu = 0),
-#   and the same lattice elastic (neo-Hookean), which must recover; uGIMP on a 1 mm grid, 2
-#   points per cell per direction.
+#   and the same lattice elastic (neo-Hookean) without friction, which must recover (QUICK
+#   also with mu = 0.3); uGIMP on a 1 mm grid, 2 points per cell per direction.
 #   QUICK=1: 2x2x2 cells, 5 mm of travel (24 %) and back. Paper size: 5x5x5 cells, 12 mm (24 %)
 #   and back (cost measured in docs/paper-b.md).
 # Results in results/metal-lattice/{paper,quick}/: residual.md (residual.py: the residual
