@@ -14,7 +14,6 @@ friction runs on another mesh as <mesh>G4-mu<mu> (e.g. B3G4-mu0.35; B3G4 itself 
 Standard library only."""
 import argparse
 import csv
-import math
 import os
 import sys
 
@@ -67,7 +66,8 @@ class Run:
         return cpu, 1e3 * cpu / steps if steps else float("nan")
 
 
-def lo_end(done):
+def common_end(done):
+    """The time (us) every run of `done` reached."""
     return min(r.t_end_us for r in done.values())
 
 
@@ -131,7 +131,7 @@ def main():
             continue
         values = ", ".join(f"{r.final() / 1e3:.2f} kN (mu = {mu:g})" for mu, r in done.items())
         line = (f"- **Friction on {mesh}/G4** (paper B: mu = 0.05 and 0.35 change the final f_i by < 5 %): "
-                f"f_i at {lo_end(done):.0f} us {values}")
+                f"f_i at {common_end(done):.0f} us {values}")
         if 0.05 in done and 0.35 in done:
             lo, hi = done[0.05], done[0.35]
             spread = pct(hi.final(), lo.final())
@@ -159,7 +159,8 @@ def main():
     if ref and grids:
         parts = []
         for g, r in grids:
-            t = 150 if r.finished() else max(t for t in TIMES_US if r.at(t, "load_driven[N]") is not None) if r.t_end_us >= 10 else None
+            reached = [t for t in TIMES_US if r.at(t, "load_driven[N]") is not None]
+            t = reached[-1] if reached else None  # the latest of TIMES_US the run reached
             if t is None:
                 parts.append(f"G{g}: {r.ended()}")
                 continue
