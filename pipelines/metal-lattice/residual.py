@@ -35,7 +35,8 @@ def analyse(run):
     # Unloading: the first row after the deepest point where the platen carries no force.
     release = next((i for i in range(deepest, len(rows)) if force[i] <= 1e-9 * peak), None)
     end = rows[-1]
-    s = read_status(run)
+    # A run still going (no status.toml yet) is read as far as its series goes.
+    s = read_status(run) if os.path.exists(os.path.join(run, "status.toml")) else {"status": "running"}
     return {
         "u_max_mm": travel[deepest],
         "peak_force_N": peak,
