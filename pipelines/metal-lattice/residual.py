@@ -7,7 +7,7 @@ point touches it: the lattice's recovered top; the residual deformation), the re
 (u_max - u_release) / u_max, the energies at the deepest point and at the end, and the cost.
 A run named by --must-recover (an elastic run without friction) must recover: its u_release
 must lie within `--recover` (a fraction of u_max) of the start; the table says whether it
-does, and the script exits 3 when it does not.
+does, and the script exits 1 when it does not.
 
 usage: residual.py --height H0_MM --out DIR [--recover 0.02] [--must-recover LABEL ...] LABEL=RUN_DIR ...
 writes DIR/residual.csv and DIR/residual.md (standard library only)."""
