@@ -10,8 +10,8 @@
 # f_i against time), forces.png (f_i, f_t and f_a of the mu = 0.1 run, paper B Fig. 8), run-<case>/
 # (series.csv: load_driven = f_i, load_fixed = f_t, load_average = f_a, Eq. 14).
 # Chain: latmpm-hexmesh --cylinder -> latmpm-solve pipelines/shpb/shpb.toml -> latmpm-post.
-# Cost (measured, docs/paper-b.md "The paper-size table"): the paper table is ~34 min of CPU
-# (B6 for 150 us: 7.2 min, B5: 4.3 min each), ~20 min of wall with -j2 on an idle 2-core
+# Cost (measured, docs/paper-b.md "The paper-size table"): the paper table is 42 min of CPU
+# (B6 for 150 us: 8.6 min, B5: ~5 min each), ~25 min of wall with -j2 on an idle 2-core
 # machine; QUICK=1 ~30 s of CPU.
 include pipelines/common.mk
 
@@ -41,8 +41,38 @@ shpb:
 SH_FORCES_RUN := $(firstword $(filter mu0.1-%,$(foreach r,$(SH_FRICTION),$(call pipeline_field,$r,1))))
 
 shpb-results: $(if $(SH_FRICTION),$(SH_OUT)/friction/summary.md) $(if $(SH_MESHES),$(SH_OUT)/meshes/summary.md) \
-    $(if $(SH_GRIDS),$(SH_OUT)/grids/summary.md) $(if $(SH_FORCES_RUN),$(SH_OUT)/forces.png)
-	@echo "shpb: results in $(SH_OUT)/{friction,meshes,grids}/summary.md"
+    $(if $(SH_GRIDS),$(SH_OUT)/grids/summary.md) $(if $(SH_FORCES_RUN),$(SH_OUT)/forces.png) \
+    $(SH_OUT)/comparison.md $(if $(SH_FRICTION),$(SH_OUT)/friction.png) $(if $(SH_MESHES),$(SH_OUT)/meshes.png) \
+    $(if $(SH_GRIDS),$(SH_OUT)/grids.png)
+	@echo "shpb: results in $(SH_OUT)/comparison.md and $(SH_OUT)/{friction,meshes,grids}/summary.md"
+
+# Every selected row against paper B in numbers (paper_table.py): the table of f_i, f_t, f_a,
+# energy and CPU per run, then the friction spread per mesh, mesh and grid convergence, B6.
+SH_LABEL_RUNS := $(call pipeline_label_runs,$(SH_OUT),$(SH_SELECTED))
+sh_done = $(foreach r,$(1),$(lastword $(subst =, ,$r))/done)
+$(SH_OUT)/comparison.md: $(call sh_done,$(SH_LABEL_RUNS)) $(SH_SRC)/paper_table.py
+	python3 $(SH_SRC)/paper_table.py --out $@ $(SH_LABEL_RUNS)
+
+# f_i against time per study (paper B Figs. 11, 12a, 12b): plot_study.gp over the study's rows
+# (friction: also the rows <mesh>G4-mu<mu> of another mesh).
+SH_FRICTION_PLOT := $(SH_FRICTION) $(call sh_rows_named,$(SH_GRID_MESH:B4=B3)G4-mu%)
+sh_plot = gnuplot -e "files='$(foreach r,$(2),$(lastword $(subst =, ,$r))/series.csv)'; \
+  labels='$(foreach r,$(2),$(firstword $(subst =, ,$r)))'; png='$(1)'; label='$(3)'" $(SH_SRC)/plot_study.gp
+$(SH_OUT)/friction.png: $(call sh_done,$(call pipeline_label_runs,$(SH_OUT),$(SH_FRICTION_PLOT))) $(SH_SRC)/plot_study.gp
+	$(call sh_plot,$@,$(call pipeline_label_runs,$(SH_OUT),$(SH_FRICTION_PLOT)),SHPB: f_i against friction (paper B Fig. 11))
+$(SH_OUT)/meshes.png: $(call sh_done,$(call pipeline_label_runs,$(SH_OUT),$(SH_MESHES))) $(SH_SRC)/plot_study.gp
+	$(call sh_plot,$@,$(call pipeline_label_runs,$(SH_OUT),$(SH_MESHES)),SHPB: f_i of the meshes on G4 (paper B Fig. 12a))
+$(SH_OUT)/grids.png: $(call sh_done,$(call pipeline_label_runs,$(SH_OUT),$(SH_GRIDS))) $(SH_SRC)/plot_study.gp
+	$(call sh_plot,$@,$(call pipeline_label_runs,$(SH_OUT),$(SH_GRIDS)),SHPB: f_i of the grids on $(SH_GRID_MESH) (paper B Fig. 12b))
+
+# The paper-size figures and table of docs/paper-b.md ("The paper-size study, run").
+.PHONY: shpb-docs
+shpb-docs: shpb-results
+	cp $(SH_OUT)/friction.png docs/paper-b-shpb-friction.png
+	cp $(SH_OUT)/meshes.png docs/paper-b-shpb-meshes.png
+	cp $(SH_OUT)/grids.png docs/paper-b-shpb-grids.png
+	cp $(SH_OUT)/forces.png docs/paper-b-shpb-forces.png
+	@echo "shpb-docs: figures copied; the table and comparisons of docs/paper-b.md are $(SH_OUT)/comparison.md"
 
 # Mesh level k (B<k>): core 2k, ring k, axial 4k divisions (docs/paper-b.md).
 $(SH_OUT)/b%.h5: | $(BIN)/latmpm-hexmesh

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Residual deformation of load-unload runs (make metal-lattice; docs/paper-b.md).
+
+For each run (its series.csv and status.toml): the deepest platen travel u_max, the peak
+platen force, the travel u_release where the platen's force returns to zero on unloading (no
+point touches it: the lattice's recovered top; the residual deformation), the recovered share
+(u_max - u_release) / u_max, the energies at the deepest point and at the end, and the cost.
+A run named by --must-recover (an elastic run without friction) must recover: its u_release
+must lie within `--recover` (a fraction of u_max) of the start; the table says whether it
+does, and the script exits 1 when it does not.
+
+usage: residual.py --height H0_MM --out DIR [--recover 0.02] [--must-recover LABEL ...] LABEL=RUN_DIR ...
+writes DIR/residual.csv and DIR/residual.md (standard library only)."""
+import argparse
+import csv
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from run_status import read_status  # noqa: E402
+
+
+
+
+def analyse(run):
+    with open(os.path.join(run, "series.csv")) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ValueError(f"{run}/series.csv: no rows")
+    col = lambda r, name: float(r[name])
+    travel = [col(r, "displacement[m]") * 1e3 for r in rows]  # mm, along the loading axis (down)
+    force = [col(r, "load_driven[N]") for r in rows]
+    deepest = max(range(len(rows)), key=lambda i: travel[i])
+    peak = max(force)
+    # Unloading: the first row after the deepest point where the platen carries no force.
+    release = next((i for i in range(deepest, len(rows)) if force[i] <= 1e-9 * peak), None)
+    end = rows[-1]
+    # A run still going (no status.toml yet) is read as far as its series goes.
+    s = read_status(run) if os.path.exists(os.path.join(run, "status.toml")) else {"status": "running"}
+    return {
+        "u_max_mm": travel[deepest],
+        "peak_force_N": peak,
+        "u_release_mm": travel[release] if release is not None else float("nan"),
+        "released": release is not None,
+        "strain_energy_at_max_J": col(rows[deepest], "strain_energy[J]"),
+        "plastic_at_max_J": col(rows[deepest], "plastic_dissipation[J]"),
+        "work_at_max_J": col(rows[deepest], "external_work[J]"),
+        "work_end_J": col(end, "external_work[J]"),
+        "plastic_end_J": col(end, "plastic_dissipation[J]"),
+        "strain_energy_end_J": col(end, "strain_energy[J]"),
+        "friction_end_J": col(end, "friction_dissipation[J]"),
+        "kinetic_end_J": col(end, "kinetic_energy[J]"),
+        "energy_error_end_J": col(end, "energy_error[J]"),
+        "t_end_us": col(end, "time[s]") * 1e6,
+        "status": s.get("status", "?"),
+        "steps": s.get("steps", "?"),
+        "points": s.get("points", "?"),
+        "cpu_s": float(s.get("cpu_s", "nan")),
+        "wall_s": float(s.get("wall_s", "nan")),
+    }
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--height", type=float, required=True, help="the lattice's height H0 (mm)")
+    p.add_argument("--out", required=True)
+    p.add_argument("--recover", type=float, default=0.02,
+                   help="an elastic run recovers when u_release <= this fraction of u_max (default 0.02)")
+    p.add_argument("--must-recover", nargs="*", default=[], metavar="LABEL",
+                   help="runs that must recover (elastic, frictionless)")
+    p.add_argument("runs", nargs="+", help="LABEL=RUN_DIR")
+    a = p.parse_args()
+    results = []
+    for item in a.runs:
+        label, _, run = item.partition("=")
+        if not run:
+            sys.exit(f"residual.py: {item}: expected LABEL=RUN_DIR")
+        try:
+            results.append((label, analyse(run)))
+        except (OSError, KeyError, ValueError) as e:
+            sys.exit(f"residual.py: {run}: {e}")
+    os.makedirs(a.out, exist_ok=True)
+    keys = list(results[0][1].keys())
+    with open(os.path.join(a.out, "residual.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case"] + keys + ["residual_strain"])
+        for label, r in results:
+            w.writerow([label] + [r[k] for k in keys] + [r["u_release_mm"] / a.height])
+    lines = [
+        "# Load-unload: residual deformation (residual.py)", "",
+        f"Lattice height H0 = {a.height:g} mm. u_release: the platen's travel where its force returns to "
+        "zero on unloading (the lattice's recovered top); residual strain u_release / H0; recovered "
+        "(u_max - u_release) / u_max. Energies in J; CPU = the solver's user + system time.", "",
+        "| case | u_max (mm) | peak force (N) | u_release (mm) | residual strain | recovered | "
+        "elastic energy at u_max (of the work) | plastic work at the end | friction at the end | "
+        "elastic energy left at the end | energy error | status, steps, CPU (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    failed = []
+    for label, r in results:
+        rec = (r["u_max_mm"] - r["u_release_mm"]) / r["u_max_mm"] if r["released"] and r["u_max_mm"] > 0 else float("nan")
+        verdict = ""
+        if label in a.must_recover:
+            ok = r["released"] and r["u_max_mm"] > 0 and abs(r["u_release_mm"]) <= a.recover * r["u_max_mm"]
+            verdict = " (recovers)" if ok else f" (does NOT recover within {a.recover:.0%} of u_max)"
+            if not ok:
+                failed.append(label)
+        share = r["strain_energy_at_max_J"] / r["work_at_max_J"] if r["work_at_max_J"] else float("nan")
+        lines.append(
+            f"| {label} | {r['u_max_mm']:.3f} | {r['peak_force_N']:.0f} | "
+            + (f"{r['u_release_mm']:.3f}" if r["released"] else "never released")
+            + f" | {r['u_release_mm'] / a.height:.4f} | {rec:.1%}{verdict} | "
+            f"{r['strain_energy_at_max_J']:.3f} ({share:.1%}) | {r['plastic_end_J']:.3f} | {r['friction_end_J']:.3f} | "
+            f"{r['strain_energy_end_J']:.3f} | {r['energy_error_end_J']:.3f} of {r['work_end_J']:.3f} | "
+            f"{r['status']}, {r['steps']}, {r['cpu_s']:.0f} |")
+    with open(os.path.join(a.out, "residual.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    if failed:
+        sys.exit(f"residual.py: {', '.join(failed)} did not recover within {a.recover:.0%} of u_max")
+
+
+if __name__ == "__main__":
+    main()
