@@ -68,8 +68,7 @@ inline int table_index(const Bucket& b, int i, int j, int k) {
 
 // `Components` values of the nodes at local coordinates −Reach … bw − 1 + Reach around a
 // block (index local + Reach): value c of node n of block b is get(b, n)[c]; zero in
-// inactive blocks. The smoothing passes read one node around (Reach 1), the small-mass
-// passes two (ddmp_grid_detail::reach).
+// inactive blocks. The smoothing passes read one node around (Reach 1).
 template <int Reach, int Components>
 struct BlockHalo {
   static constexpr int width = bw + 2 * Reach;
@@ -112,22 +111,6 @@ void load_halo(const DdmpNodalValues& nv, size_t block, Get get, BlockHalo<Reach
     }
     const Real* in = get(size_t(nb), n);
     for (int c = 0; c < Components; ++c) out[c] = in[c];
-  });
-}
-
-// The halo's nodes as indices block · 64 + node into the grid's and DdmpNodalValues' node
-// order, −1 in inactive blocks: for passes that read a few of the halo's nodes (the
-// small-mass passes), cheaper than copying every node's values.
-template <int Reach>
-struct IndexHalo {
-  static constexpr int width = bw + 2 * Reach;
-  int32_t v[width][width][width];
-  int32_t at(int li, int lj, int lk) const { return v[li + Reach][lj + Reach][lk + Reach]; }
-};
-template <int Reach>
-void load_index_halo(const DdmpNodalValues& nv, size_t block, IndexHalo<Reach>& halo) {
-  for_each_halo_node<Reach>(nv, block, [&](int hi, int hj, int hk, int nb, int n) {
-    halo.v[hi][hj][hk] = nb < 0 ? -1 : int32_t(nb * SparseGrid::nodes_per_block + n);
   });
 }
 

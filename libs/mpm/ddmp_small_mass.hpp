@@ -77,8 +77,14 @@ struct NeighbourPattern {
 };
 struct NeighbourPatternHash {
   size_t operator()(const NeighbourPattern& p) const {
-    const uint64_t lo = uint64_t(p.bits), hi = uint64_t(p.bits >> 64);
-    return size_t(lo * 0x9E3779B97F4A7C15ull ^ (hi + 0x632BE59BD9B4E019ull + (lo >> 7)));
+    // Every bit reaches the low bits the table indexes by (splitmix64's finaliser): a plain
+    // product leaves them a function of the low pattern bits only (one slope of a face).
+    const auto mix = [](uint64_t x) {
+      x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+      x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+      return x ^ (x >> 31);
+    };
+    return size_t(mix(uint64_t(p.bits) ^ mix(uint64_t(p.bits >> 64) + 0x9E3779B97F4A7C15ull)));
   }
 };
 using Fit = std::array<Real, 4>;
