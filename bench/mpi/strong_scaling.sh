@@ -29,6 +29,7 @@ for tool in "$bin/latmpm-lattice" "$bin/latmpm-voxelize" "$bin/latmpm-solve" "$m
   [ -x "$tool" ] || { echo "strong_scaling: $tool not built" >&2; exit 1; }
 done
 command -v mpirun >/dev/null || { echo "strong_scaling: mpirun not found (openmpi-bin)" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "strong_scaling: /usr/bin/time not found (Debian package time)" >&2; exit 1; }
 # As root (containers) OpenMPI wants these; its single-copy transport can fail in containers.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
 mkdir -p "$work"
@@ -73,8 +74,11 @@ for ((r = 1; r <= rounds; ++r)); do
   fi
   round_start=$(date +%s)
   for config in t1 t2 r2; do
-    read -r w0 c0 < <(run "$config" "$warmup")
-    read -r w1 c1 < <(run "$config" $((warmup + steps)))
+    # Not through a process substitution: set -e must see a run that fails.
+    run "$config" "$warmup" > times.txt
+    read -r w0 c0 < times.txt
+    run "$config" $((warmup + steps)) > times.txt
+    read -r w1 c1 < times.txt
     wall[$config]+="$(awk -v a="$w0" -v b="$w1" -v s="$steps" 'BEGIN{printf "%.5f", (b - a) / s}') "
     cpu[$config]+="$(awk -v a="$c0" -v b="$c1" -v s="$steps" 'BEGIN{printf "%.5f", (b - a) / s}') "
   done

@@ -267,7 +267,7 @@ void Hdf5File::write_rows(const std::string& dataset, const std::vector<T>& data
     H5Sselect_hyperslab(file_space.id, H5S_SELECT_OR, start.data(), nullptr, count.data(), nullptr);
     rows += b.count;
   }
-  if (data.size() != rows * row_size) fail(dataset, "internal: the rows do not match the data size");
+  if (data.size() != rows * row_size) fail_write(dataset, "internal: the rows do not match the data size");
   // Rows arrive in file order (the selection's order), one after the other in memory.
   const hsize_t values = rows * row_size, extent = std::max<hsize_t>(values, 1);
   Handle memory_space(H5Screate_simple(1, &extent, nullptr), H5Sclose);

@@ -145,8 +145,8 @@ void pass_along(const Real (&in)[NA + 2 * (Axis == 0)][NB + 2 * (Axis == 1)][NC 
 }
 }  // namespace ddmp_grid_detail
 
-// Sizes and zeroes the nodal values for the grid's active blocks and finds each block's
-// neighbours.
+// Sizes the nodal values for the grid's active blocks (not zeroed: see below) and finds each
+// block's neighbours.
 inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const size_t blocks = grid.block_count();

@@ -553,8 +553,12 @@ Particles MpiDomain::particles_in_id_block(const Particles& local, size_t total,
     for (const char* at = in.data(); at < in.data() + in.size();) unpack_particle(block, at, present);
   }
   if (block.size() != end - first) throw std::logic_error("particles_in_id_block: ids missing or repeated");
-  std::vector<uint32_t> order(block.size());
-  for (uint32_t p = 0; p < order.size(); ++p) order[block.id[p] - first] = p;
+  std::vector<uint32_t> order(block.size(), UINT32_MAX);
+  for (uint32_t p = 0; p < order.size(); ++p) {
+    const uint64_t at = block.id[p] - first;  // ids outside [first, end) wrap to large values
+    if (at >= order.size() || order[at] != UINT32_MAX) throw std::logic_error("particles_in_id_block: ids missing or repeated");
+    order[at] = p;
+  }
   block.permute(order);
   return block;
 }
@@ -568,7 +572,15 @@ void MpiDomain::write_shared_rows(const std::string& path, const std::function<v
     check(MPI_Bcast(shared.data(), record_count(size_t(length)), MPI_CHAR, 0, comm_), "MPI_Bcast");
   }
   Hdf5File file = size_ > 1 ? open_shared_hdf5(shared, comm_) : Hdf5File(shared, Hdf5File::Mode::read_write);
-  fill(file);
+  try {
+    fill(file);
+  } catch (const std::exception& e) {
+    // The others wait in the next collective write: closing the file here (collective on an
+    // MPI-IO file) would hang them. End every process, as a rank-0 failure does.
+    if (size_ == 1) throw;
+    std::fprintf(stderr, "latmpm-solve: process %d: writing %s: %s\n", rank_, path.c_str(), e.what());
+    MPI_Abort(comm_, 2);
+  }
   file.close();
 }
 

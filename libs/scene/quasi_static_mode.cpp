@@ -53,8 +53,9 @@ QuasiStaticChoice choose_quasi_static(const Scene& scene, double bound) {
   double speed = 0;
   for (const auto& b : scene.bodies)
     if (b.role == BodyRole::driven) speed = std::max(speed, b.velocity.norm());
-  for (const auto& r : scene.rigid_bodies)
-    if (r.motion == mpm::RigidMotion::driven) speed = std::max(speed, r.velocity.norm());
+  for (const auto& r : scene.rigid_bodies)  // a scheduled platen: its fastest knot
+    if (r.motion == mpm::RigidMotion::driven || r.motion == mpm::RigidMotion::scheduled)
+      speed = std::max(speed, double(mpm::prescribed_max_speed(r)));
   // The fastest wave of the unscaled deformable materials sets the Mach number.
   double c0 = 0;
   for (const auto& b : scene.bodies)

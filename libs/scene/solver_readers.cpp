@@ -157,8 +157,10 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   s.predictor = solver.boolean("predictor", s.predictor);
   s.max_increment_growth = solver.number("max_increment_growth", s.max_increment_growth);
   if (!(s.max_increment_growth >= 1)) solver.fail("max_increment_growth", "must be at least 1 (1: fixed increments)");
-  s.krylov_iterations = int(solver.integer("krylov_iterations", s.krylov_iterations));
-  if (s.krylov_iterations < 0) solver.fail("krylov_iterations", "must be at least 0 (0: every Newton step factorises)");
+  const long krylov_iterations = solver.integer("krylov_iterations", s.krylov_iterations);
+  if (krylov_iterations < 0 || krylov_iterations > 100000)
+    solver.fail("krylov_iterations", "must lie in [0, 100000] (0: every Newton step factorises)");
+  s.krylov_iterations = int(krylov_iterations);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

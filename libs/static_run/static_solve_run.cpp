@@ -31,7 +31,7 @@ const std::vector<SeriesColumn> static_columns = {
     {"load_fixed", "N", "reaction on the supports against the loading axis, compression positive"},
     {"strain_energy", "J", "sum V0 psi over deformable points"},
     {"newton_iterations", "1", "projected Newton steps of the increment"},
-    {"linear_iterations", "1", "linear solver iterations of the increment (1 per direct solve)"},
+    {"linear_iterations", "1", "linear solver iterations of the increment, abandoned attempts included (1 per direct solve, CG iterations of Krylov steps)"},
     {"residual", "1", "relative residual force at convergence"},
     {"min_jacobian", "1", "smallest det F over the points"},
     {"stable", "1", "1: the true tangent is positive definite (0: the static path ends here)"},

@@ -71,6 +71,12 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     const Dirichlet conditions = platen_conditions(problem, loading, travel);
     Vector trial = state;
     NewtonReport r;
+    // What abandoned attempts spent, counted in the point's figures.
+    int spent_iterations = 0, spent_true_tangent = 0, spent_linear = 0, spent_krylov = 0;
+    auto abandon = [&] {
+      spent_iterations += r.iterations, spent_true_tangent += r.true_tangent_steps;
+      spent_linear += r.linear_iterations, spent_krylov += r.krylov_steps;
+    };
     bool predicted = false;
     if (loading.predictor && u_before.size() == state.size() && stable_travel > travel_before) {
       trial += (travel - stable_travel) / (stable_travel - travel_before) * (state - u_before);
@@ -81,20 +87,19 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     }
     point.predicted = predicted && r.converged;
     if (!point.predicted) {
-      const int spent = r.iterations;  // from an abandoned prediction: counted too
+      abandon();  // an abandoned prediction (or none: zeros)
       trial = state;
       r = solve_equilibrium(problem, conditions, trial, solver, newton);
-      r.iterations += spent;
     }
-    if (!r.converged && newton.krylov_iterations > 0) {
-      // Krylov steps take other (inexact) directions: where they fail, the increment is
-      // solved again by factorising Newton, so that they never end a path it would continue.
-      const int spent = r.iterations;
+    if (!r.converged && r.krylov_steps + spent_krylov > 0) {
+      // Krylov steps take other (inexact) directions: where a solve that took any fails, the
+      // increment is solved again by factorising Newton, so that they never end a path it
+      // would continue. A solve that took none already was factorising Newton.
+      abandon();
       NewtonOptions factorising = newton;
       factorising.krylov_iterations = 0;
       trial = state;
       r = solve_equilibrium(problem, conditions, trial, solver, factorising);
-      r.iterations += spent;
       point.predicted = false;
     }
     if (!r.converged) {
@@ -107,10 +112,10 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     point.load = nodal_load(loading.platen_nodes, loading.direction, f_int);
     point.support_load = -nodal_load(loading.support_nodes, loading.direction, f_int);
     point.energy = r.energy.back() + problem.external_force().dot(state);
-    point.newton_iterations = r.iterations;
-    point.true_tangent_steps = r.true_tangent_steps;
-    point.linear_iterations = r.linear_iterations;
-    point.krylov_steps = r.krylov_steps;
+    point.newton_iterations = r.iterations + spent_iterations;
+    point.true_tangent_steps = r.true_tangent_steps + spent_true_tangent;
+    point.linear_iterations = r.linear_iterations + spent_linear;
+    point.krylov_steps = r.krylov_steps + spent_krylov;
     point.linear_residual = r.linear_residual;
     point.residual = r.residual.back();
     point.min_jacobian = r.min_jacobian;

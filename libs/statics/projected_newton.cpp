@@ -109,9 +109,12 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
           break;
         }
         report.linear_iterations += kr.iterations;  // spent before the factorisation
-        if (kr.outcome == KrylovOutcome::negative_curvature && !projected) {
+        // Non-positive curvature, or a solution at forcing ≤ 1e-2 that does not descend: the
+        // true tangent is indefinite (a positive definite one gives a descent direction), so
+        // on to the projected Hessian without factorising it.
+        if (!projected && kr.outcome != KrylovOutcome::not_converged) {
           true_tangent_failed_at = residual;
-          continue;  // to the projected Hessian, without factorising the indefinite one
+          continue;
         }
       }
       for (;;) {

@@ -5,8 +5,8 @@ usage: initial_tangent.py RANGE_MM SERIES_CSV [SERIES_CSV ...]
 
 Per run (a static path or an explicit run's series.csv): the least-squares fit
 F(d) = k0 d + a d^2 of the base's reaction `load_fixed` over the rows with d (the platen's
-travel) in RANGE_MM ("0:0.3"), and the secant F/d at 0.1 mm (the mean of the rows within
-0.1 +- 0.025 mm). k0 is the stiffness at d -> 0 on both sides: the secant at a finite travel
+travel) in RANGE_MM ("0:0.3"), and the secant F/d at 0.1 mm (the mean of F/d over the rows
+within 0.1 +- 0.025 mm). k0 is the stiffness at d -> 0 on both sides: the secant at a finite travel
 also holds the path's first-order softening, which the explicit updated-Lagrangian run and
 the static total-Lagrangian solve do not share. Prints one markdown table row per run.
 """
@@ -31,9 +31,11 @@ def main():
         b1 = sum(x * y for x, y in pts)
         b2 = sum(x * x * y for x, y in pts)
         det = s11 * s22 - s12 * s12
+        if det <= 1e-12 * s11 * s22:
+            raise SystemExit(f"initial_tangent.py: {path}: the rows in {lo}:{hi} mm do not fix a quadratic (one travel)")
         k0, a = (b1 * s22 - b2 * s12) / det, (s11 * b2 - s12 * b1) / det
-        near = [y for x, y in zip(d, f) if abs(x - 0.1) <= 0.025]
-        secant = f"{sum(near) / len(near) / 0.1:.4f}" if near else "-"
+        near = [y / x for x, y in zip(d, f) if abs(x - 0.1) <= 0.025 and x > 0]
+        secant = f"{sum(near) / len(near):.4f}" if near else "-"
         print(f"| {path} | {len(pts)} | {k0:.4f} | {a:.3f} | {secant} |")
 
 

@@ -32,7 +32,7 @@ for l in "$@"; do
   end=$(sed -n 's/^reason = "the static path ends (\(.*\)) at travel \([-0-9.e+]*\) m, load \([-0-9.e+]*\) N"$/\1;\2;\3/p' "$path/status.toml" 2>/dev/null || true)
   # A path stopped before it ended (a run killed or still going, no done stamp): how far its
   # series got, stable all the way (the last row of series.csv: travel m, load N).
-  last=$(tail -n 1 "$path/series.csv" 2>/dev/null | awk -F, 'NR == 1 && $3 + 0 > 0 { printf "%.4g mm (%.4g N)", $3 * 1e3, $4 }' || true)
+  last=$(tail -n 1 "$path/series.csv" 2>/dev/null | awk -F, 'NR == 1 && $3 + 0 > 0 && $11 == 1 { printf "%.4g mm (%.4g N)", $3 * 1e3, $4 }' || true)
   if [ ! -f "$path/done" ] && [ -n "$last" ]; then
     reason="path stopped unfinished: stable to $last" travel="" load=""
   elif [ ! -f "$path/done" ]; then

@@ -1,5 +1,5 @@
 // Krylov steps (projected_newton.hpp, NewtonOptions::krylov_iterations): CG preconditioned by
-// the Cholesky factor of an earlier matrix (factor_preconditioner.hpp). The preconditioned
+// the Cholesky factor of an earlier matrix (preconditioned_cg.hpp). The preconditioned
 // solve must reach its tolerance on a nearby matrix and refuse without a factor; a path
 // solved with Krylov steps must reach the same equilibria (each increment is solved to the
 // same residual tolerance) with fewer factorisations, and the stability checks must still
