@@ -50,25 +50,33 @@ OneProcessRows one_process_rows(const BucketTables& mine, const BucketPlacement&
     add_block(out.particle_blocks, 0, particles);
     return out;
   }
+  // This process's buckets and runs moved to their one-process indices, written as
+  // bucket_rows and run_rows write a one-process table.
+  std::vector<Bucket> placed;
+  std::vector<BodyRun> placed_runs;
+  placed.reserve(mine.buckets.size());
   uint32_t next = 0;  // the buckets' particles follow one another here (the sort's layout)
   for (size_t b = 0; b < mine.buckets.size(); ++b) {
     const Bucket& bucket = mine.buckets[b];
     if (bucket.begin != next) throw std::logic_error("one_process_rows: the buckets do not hold the particles in order");
     next = bucket.end;
-    const int64_t first = int64_t(placement.first_particle[b]), first_run = int64_t(placement.first_run[b]);
-    const int64_t shift = first - int64_t(bucket.begin);  // its particles' one-process indices
-    out.buckets.insert(out.buckets.end(), {bucket.coord[0], bucket.coord[1], bucket.coord[2], first,
-                                           first + int64_t(bucket.end - bucket.begin), first_run,
-                                           first_run + int64_t(bucket.run_end - bucket.run_begin)});
+    const uint32_t first = uint32_t(placement.first_particle[b]), first_run = uint32_t(placement.first_run[b]);
+    Bucket moved = bucket;
+    moved.begin = first, moved.end = first + (bucket.end - bucket.begin);
+    moved.run_begin = first_run, moved.run_end = first_run + (bucket.run_end - bucket.run_begin);
+    placed.push_back(moved);
     for (uint32_t r = bucket.run_begin; r < bucket.run_end; ++r) {
-      const BodyRun& run = mine.runs[r];
-      out.runs.insert(out.runs.end(), {run.body, int64_t(run.begin) + shift, int64_t(run.end) + shift});
+      BodyRun run = mine.runs[r];
+      run.begin = run.begin - bucket.begin + first, run.end = run.end - bucket.begin + first;
+      placed_runs.push_back(run);
     }
     add_block(out.bucket_blocks, placement.row[b], 1);
     add_block(out.run_blocks, placement.first_run[b], bucket.run_end - bucket.run_begin);
     add_block(out.particle_blocks, placement.first_particle[b], bucket.end - bucket.begin);
   }
   if (next != particles) throw std::logic_error("one_process_rows: particles outside the buckets");
+  out.buckets = bucket_rows(placed);
+  out.runs = run_rows(placed_runs);
   return out;
 }
 
