@@ -161,6 +161,13 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   if (krylov_iterations < 0 || krylov_iterations > 100000)
     solver.fail("krylov_iterations", "must lie in [0, 100000] (0: every Newton step factorises)");
   s.krylov_iterations = int(krylov_iterations);
+  const long newton_iterations = solver.integer("newton_iterations", s.newton_iterations);
+  if (newton_iterations < 1 || newton_iterations > 10000)
+    solver.fail("newton_iterations", "must lie in [1, 10000] (Newton steps of an increment)");
+  s.newton_iterations = int(newton_iterations);
+  const long bisections = solver.integer("bisections", s.bisections);
+  if (bisections < 0 || bisections > 60) solver.fail("bisections", "must lie in [0, 60] (halvings of the end's bracket)");
+  s.bisections = int(bisections);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

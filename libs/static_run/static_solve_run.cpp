@@ -105,6 +105,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   statics::NewtonOptions newton;
   newton.tolerance = scene.solver.statics.tolerance;
   newton.krylov_iterations = scene.solver.statics.krylov_iterations;
+  newton.max_iterations = scene.solver.statics.newton_iterations;
   newton.stop_requested = [] { return interruption_signal() != 0; };
 
   std::filesystem::create_directories(run_dir);
