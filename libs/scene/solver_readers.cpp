@@ -63,14 +63,14 @@ void read(TableReader& m, mpm::MaterialParameters& p) {
 }
 
 namespace {
-// contact = { model, friction, stiffness }: how a rigid body acts on the material.
+// contact = { model, friction, stiffness, reach }: how a rigid body acts on the material.
 void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
   auto contact = b.optional_table("contact");
   if (!contact) return;
   body.coupling = mpm::parse_rigid_coupling(
       contact->choice("model", mpm::rigid_coupling_names(), mpm::to_string(mpm::RigidCoupling::no_slip)));
   if (body.coupling == mpm::RigidCoupling::no_slip) {
-    for (const char* key : {"friction", "stiffness"})
+    for (const char* key : {"friction", "stiffness", "reach"})
       if (contact->has(key)) contact->fail(key, "only penalty contact (model = \"penalty\") takes it");
   } else {
     // μ: a number ≥ 0 (0 slides freely) or "stick" (never slides).
@@ -86,6 +86,8 @@ void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
       body.contact_stiffness = contact->quantity("stiffness", dimension::stiffness);
       if (!(body.contact_stiffness > 0)) contact->fail("stiffness", "must be positive (leave it out for the default)");
     }
+    body.contact_reach = mpm::parse_contact_reach(
+        contact->choice("reach", mpm::contact_reach_names(), mpm::to_string(mpm::ContactReach::domain)));
   }
   contact->finish();
 }
