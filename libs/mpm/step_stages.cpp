@@ -100,8 +100,11 @@ void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position
     // first term is the explicit step's kick at the points, which the strain energy's
     // second-order gain ½ dt² V L:C:L returns on average (a bounded oscillation); the second
     // is the projection's definite loss (Jensen: ≥ 0 for weights ≥ 0 that sum to one),
-    // booked like the blend's (docs/solver.md, "Energy").
-    sums.transfer_dissipation = 2 * (sums.node_increment_energy - sum[5]);
+    // booked like the blend's (docs/solver.md, "Energy"). Only where the strain rate is taken
+    // at the new nodal velocities (USL, `gradient` in this pass): MUSL's work is at the
+    // remapped velocity, Σ_p m_p v_p^{n+1}·Δv_p, and USF's at v^n, Σ_I p_I·Δv_I, so their
+    // balances change by ∓Σ_p ½ m_p |Δv_p|² alone, with no projection term.
+    sums.transfer_dissipation = gradient ? 2 * (sums.node_increment_energy - sum[5]) : 0;
     sums.max_speed_sq = c.domain.reduce_max(local.max_speed_sq);
   }
   if (position) {

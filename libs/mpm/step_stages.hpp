@@ -326,7 +326,8 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
 
 template <class Shape, class Mode>
 void gather(SolverState& s, StepContext& c, Real dt) {
-  if constexpr (Mode::velocity) c.sums.node_increment_energy = node_increment_energy(s, c);
+  // The projection's loss is booked for USL only (absorb_tallies): the node sum is needed there.
+  if constexpr (Mode::velocity && Mode::gradient_lane >= 0) c.sums.node_increment_energy = node_increment_energy(s, c);
   gather_buckets<Shape, Mode>(s, c, dt, c.tallies);
   absorb_tallies(s, c, Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
 }
