@@ -311,19 +311,31 @@ TEST_CASE("A column standing on a fixed rigid base carries its weight in load_fi
 
 TEST_CASE("A static solve takes its Newton budget and bisections from the scene", "[solve]") {
   // Neo-Hookean: the first increment cannot converge in one Newton step (the step that moves
-  // the platen is followed by equilibrium iterations), so the path ends there, unbisected.
-  std::string text = tiny_scene;
-  const std::string from = "\"1050kg/m^3\" }", to = "\"1050kg/m^3\", model = \"neo_hookean\" }";
-  text.replace(text.find(from), from.size(), to);
-  text += "[solver]\nkind = \"static\"\nincrements = 2\nnewton_iterations = 1\nbisections = 0\n";
-  const std::string scene = write_scene("budget.toml", text);
-  const fs::path run = scratch() / "run-budget";
-  fs::remove_all(run);
-  ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet");
-  INFO(r.err);
-  CHECK(r.status == 0);  // a path that ends is an answer; status.toml says how it ended
-  std::ifstream in(run / "log.txt");
-  const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  CHECK_THAT(log, Catch::Contains("no convergence in 1 Newton steps"));
-  CHECK_THAT(log, Catch::Contains("0 increments"));
+  // the platen is followed by equilibrium iterations), so the path ends there; each bisection
+  // is one more (failing) solve, each starting with a "Newton step 1" line.
+  auto run_with = [](int bisections) {
+    std::string text = tiny_scene;
+    const std::string from = "\"1050kg/m^3\" }", to = "\"1050kg/m^3\", model = \"neo_hookean\" }";
+    text.replace(text.find(from), from.size(), to);
+    text += "[solver]\nkind = \"static\"\nincrements = 2\nnewton_iterations = 1\nbisections = " +
+            std::to_string(bisections) + "\n";
+    const std::string name = "budget-" + std::to_string(bisections);
+    const std::string scene = write_scene(name + ".toml", text);
+    const fs::path run = scratch() / ("run-" + name);
+    fs::remove_all(run);
+    ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet");
+    INFO(r.err);
+    CHECK(r.status == 0);  // a path that ends is an answer; status.toml says how it ended
+    std::ifstream in(run / "log.txt");
+    const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK_THAT(log, Catch::Contains("no convergence in 1 Newton steps"));
+    CHECK_THAT(log, Catch::Contains(", 0 increments"));
+    size_t solves = 0;
+    for (size_t at = log.find("Newton step 1:"); at != std::string::npos; at = log.find("Newton step 1:", at + 1)) ++solves;
+    CHECK(log.find("Newton step 2:") == std::string::npos);  // the budget: one step a solve
+    return solves;
+  };
+  const size_t unbisected = run_with(0), bisected = run_with(2);
+  CHECK(unbisected >= 1);
+  CHECK(bisected > unbisected);  // two more travels tried
 }
