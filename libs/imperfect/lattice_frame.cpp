@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 
 #include "core/errors.hpp"
 #include "core/units.hpp"
@@ -38,12 +37,7 @@ int layer_count(const PointSet& points, const std::string& where) {
   return static_cast<int>(n);
 }
 
-std::string metres(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v * 1e3 << " mm";
-  return os.str();
-}
+std::string metres(double v) { return format_millimetres(v, 6); }
 
 }  // namespace
 

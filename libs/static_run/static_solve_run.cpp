@@ -9,7 +9,9 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/interruption.hpp"
 #include "core/number_text.hpp"
+#include "core/tool_main.hpp"
 #include "run_output/run_log.hpp"
 #include "run_output/run_status.hpp"
 #include "run_output/series_writer.hpp"
@@ -103,6 +105,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   statics::NewtonOptions newton;
   newton.tolerance = scene.solver.statics.tolerance;
   newton.krylov_iterations = scene.solver.statics.krylov_iterations;
+  newton.stop_requested = [] { return interruption_signal() != 0; };
 
   std::filesystem::create_directories(run_dir);
   {
@@ -163,6 +166,15 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     log.line(line);
     if (progress) std::cerr << "latmpm-solve: " << line << "\n";
   };
+  // Every Newton step in the log: a paper-size increment that does not converge is tens of
+  // minutes of steps (docs/statics.md), which the increment lines alone leave silent.
+  newton.on_step = [&](const statics::NewtonStep& s) {
+    log.line("  increment " + std::to_string(step + 1) + ", Newton step " + std::to_string(s.iteration) +
+             ": residual " + format_number("%.2e", s.residual_before) + ", " +
+             (s.true_tangent ? "true tangent" : "projected") + ", " +
+             (s.krylov ? "Krylov (" + std::to_string(s.linear_iterations) + " CG)" : std::string("factorised")) +
+             ", step " + format_number("%.3g", s.alpha));
+  };
   // Iterative solves (CG, AMG) to 1e-4 of the Newton tolerance: at 1e-2 of it a linear
   // problem took two Newton steps instead of one (QUICK T2P30, docs/statics.md).
   statics::SparseSolver solver(solver_kind, 1e-4 * scene.solver.statics.tolerance);
@@ -170,6 +182,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   for (size_t n = 0; n < node_positions.size(); ++n) node_positions[n] = problem.band().node_position(n);
   solver.set_node_positions(std::move(node_positions));
   std::optional<statics::PhaseTimer> path_timer(path_time);
+  InterruptionDeferral deferral;  // a first signal stops the path between Newton steps
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
   path_timer.reset();
   log.line("linear solver: " + solver.describe());
@@ -187,8 +200,14 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   // A non-positive-definite tangent and a load maximum are both ends of a stable path (the
   // run's answer); only a Newton failure is a failed run.
   const bool instability = path.end_reason == "tangent not positive definite" || path.end_reason == "load maximum";
-  s.status = !path.ended ? "finished" : instability ? "unstable" : "not converged";
-  if (path.ended) {
+  s.status = !path.ended ? "finished" : path.stopped ? "interrupted" : instability ? "unstable" : "not converged";
+  if (path.stopped) {
+    s.signal = interruption_signal();
+    log.line(std::string("stopped by ") + signal_name(s.signal) + " after " + std::to_string(step) +
+             " increments (last converged travel " + format_number("%.6g", path.last_stable_travel) +
+             " m, load " + format_number("%.6g", path.last_stable_load) +
+             " N): the series and snapshots hold them; a static solve has no checkpoint");
+  } else if (path.ended) {
     s.end_travel = path.end_travel;
     s.end_load = path.end_load;
     log.line("the static path ends (" + path.end_reason + ") at travel " + format_number("%.6g", path.end_travel) +
@@ -197,10 +216,11 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   }
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
-  outcome.status = s.status == "not converged" ? "failed" : "finished";
-  outcome.exit_status = 0;
+  outcome.status = s.status == "not converged" ? "failed" : path.stopped ? "interrupted" : "finished";
+  outcome.exit_status = path.stopped ? exit_signal_base + s.signal : 0;
   // Where the path ends, for pipelines reading status.toml (pipelines/lattice-stiffness/table.sh).
-  outcome.reason = path.ended ? "the static path ends (" + path.end_reason + ") at travel " +
+  outcome.reason = path.stopped ? std::string("stopped by ") + signal_name(s.signal)
+                   : path.ended ? "the static path ends (" + path.end_reason + ") at travel " +
                                     format_number("%.6g", path.end_travel) + " m, load " +
                                     format_number("%.6g", path.end_load) + " N"
                               : "";
@@ -213,9 +233,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   outcome.peak_memory_mb = process_peak_memory_mb();
   write_run_status(run_dir, outcome, provenance);
   // latmpm-post reads "status:" (finished / failed) and "stopped:" (why) lines.
-  if (path.ended)
+  if (path.ended && !path.stopped)
     log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format_number("%.6g", path.end_travel) + " m");
-  log.line(std::string("status: ") + (s.status == "not converged" ? "failed" : "finished") + " (static " + s.status +
+  log.line(std::string("status: ") + (s.status == "not converged" ? "failed" : path.stopped ? "interrupted" : "finished") + " (static " + s.status +
            "), " + std::to_string(s.increments) + " increments, wall " + format_number("%.2f", s.wall_seconds) + " s");
   return s;
 }

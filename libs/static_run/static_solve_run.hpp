@@ -14,7 +14,8 @@
 namespace latmpm {
 
 struct StaticSolveSummary {
-  std::string status;       // "finished", "unstable" (path ended) or "not converged"
+  std::string status;       // "finished", "unstable" (path ended), "not converged" or "interrupted"
+  int signal = 0;           // the signal that stopped it ("interrupted"), else 0
   int increments = 0;       // converged equilibrium steps (bisection included)
   double travel = 0;        // m, the last converged travel
   double end_travel = 0;    // m, where the path ended (0 if it did not)
@@ -24,6 +25,9 @@ struct StaticSolveSummary {
 };
 
 // Reads the points, builds the problem (InputErrors here, nothing written), runs and writes.
+// SIGINT, SIGTERM or SIGHUP stop the path before the next Newton step (core/interruption.hpp):
+// the converged increments stay in the series and snapshots, status.toml says "interrupted"
+// (a static solve has no checkpoint: a new run starts again).
 StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, const std::string& run_dir,
                                     bool progress);
 

@@ -67,6 +67,9 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
   // With the predictor, Newton starts from the secant extrapolation of the last two
   // equilibria (its prescribed unknowns exact); where that inverts a point or does not
   // converge, from u itself, as without it.
+  // A stop request (a signal: core/interruption.hpp) ends the path where it stands: no retry,
+  // no bisection; the converged increments are the answer so far.
+  bool stopped = false;
   auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure) {
     const Dirichlet conditions = platen_conditions(problem, loading, travel);
     Vector trial = state;
@@ -85,11 +88,19 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       predicted = problem.is_quadratic() || problem.min_jacobian(trial) > 0;
       if (predicted) r = solve_equilibrium(problem, conditions, trial, solver, newton);
     }
+    if (r.stopped) {
+      stopped = true;
+      return false;
+    }
     point.predicted = predicted && r.converged;
     if (!point.predicted) {
       abandon();  // an abandoned prediction (or none: zeros)
       trial = state;
       r = solve_equilibrium(problem, conditions, trial, solver, newton);
+      if (r.stopped) {
+        stopped = true;
+        return false;
+      }
     }
     if (!r.converged && r.krylov_steps + spent_krylov > 0) {
       // Krylov steps take other (inexact) directions: where a solve that took any fails, the
@@ -101,6 +112,10 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       trial = state;
       r = solve_equilibrium(problem, conditions, trial, solver, factorising);
       point.predicted = false;
+      if (r.stopped) {
+        stopped = true;
+        return false;
+      }
     }
     if (!r.converged) {
       failure = r.failure;
@@ -134,12 +149,26 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     return true;
   };
 
+  auto end_stopped = [&] {
+    report.ended = true;
+    report.stopped = true;
+    report.end_reason = "stopped";
+    report.last_stable_travel = stable_travel;
+    report.last_stable_load = 0;
+    for (const PathPoint& p : report.points)
+      if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+    report.end_travel = stable_travel;
+    report.end_load = report.last_stable_load;
+    return report;
+  };
+
   const Real base_step = loading.travel / loading.increments;
   const Real max_step = base_step * std::max(Real(1), loading.max_step_growth);
   const Real end_tolerance = 1e-9 * loading.travel;
   Real step = base_step;
   int increment = 0;
   while (stable_travel < loading.travel - end_tolerance) {
+    if (newton.stop_requested && newton.stop_requested()) return end_stopped();
     ++increment;
     const Real target = loading.travel - stable_travel < step + end_tolerance
                             ? loading.travel
@@ -148,6 +177,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     std::string failure;
     Vector next = u;
     const bool converged = solve_at(target, next, point, failure);
+    if (stopped) return end_stopped();
     if (!converged && step > base_step * (1 + 1e-9)) {  // too large a step: halve it, retry
       step = std::max(base_step, Real(0.5) * step);
       ++report.cut_backs;
@@ -196,6 +226,7 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       std::string trial_failure;
       Vector trial = u;
       const bool trial_converged = solve_at(mid, trial, trial_point, trial_failure);
+      if (stopped) return end_stopped();
       if (trial_converged && loading.end_at_load_maximum && !report.points.empty() &&
           trial_point.load < report.points.back().load)
         trial_point.stable = false;

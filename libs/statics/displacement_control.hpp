@@ -64,7 +64,9 @@ struct PathPoint {
 struct PathReport {
   std::vector<PathPoint> points;  // the converged increments, in order (bisection included)
   bool ended = false;             // an instability or a failure ended the path before `travel`
-  std::string end_reason;         // "tangent not positive definite", or Newton's failure
+  std::string end_reason;         // "tangent not positive definite", "load maximum", "stopped"
+                                  // (NewtonOptions::stop_requested), or Newton's failure
+  bool stopped = false;           // a stop request ended it: end_travel is the last stable travel
   Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable);
                                   // a load maximum: the vertex of the parabola through the last
                                   // three loads (no bisection: the top is flat)

@@ -57,6 +57,11 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
       report.converged = true;
       break;
     }
+    if (options.stop_requested && options.stop_requested()) {
+      report.stopped = true;
+      report.failure = "stopped before Newton step " + std::to_string(k + 1);
+      break;
+    }
     if (k == options.max_iterations) {
       report.failure = "no convergence in " + std::to_string(k) + " Newton steps (relative residual " +
                        std::to_string(residual) + ")";
@@ -71,6 +76,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     // An iterative solver builds its preconditioner for an indefinite true tangent too: its
     // direction is then taken only when it solved and descends, else the projected one.
     bool factorized = false, krylov_solved = false;
+    const int true_steps_before = report.true_tangent_steps;
     Vector rhs, d;
     LinearSolveStats stats;
     for (const bool projected : {false, true}) {
@@ -168,6 +174,16 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     }
     u += alpha * d;
     report.step.push_back(alpha);
+    if (options.on_step) {
+      NewtonStep s;
+      s.iteration = report.iterations;
+      s.residual_before = residual;
+      s.alpha = alpha;
+      s.true_tangent = report.true_tangent_steps > true_steps_before;
+      s.krylov = krylov_solved;
+      s.linear_iterations = stats.iterations;
+      options.on_step(s);
+    }
   }
   report.min_jacobian = problem.min_jacobian(u);
   return report;

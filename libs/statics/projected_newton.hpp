@@ -12,6 +12,7 @@
 // raises the energy by design: it is bounded by the inversion-free step only.
 // Linear elasticity is quadratic: one iteration reaches the solution.
 #pragma once
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,6 +22,16 @@
 #include "statics/static_problem.hpp"
 
 namespace latmpm::statics {
+
+// One Newton step, as NewtonOptions::on_step is told of it.
+struct NewtonStep {
+  int iteration = 0;           // 1, 2, ... within the solve
+  Real residual_before = 0;    // relative residual force at the step's start
+  Real alpha = 0;              // step length taken
+  bool true_tangent = false;   // the unprojected Hessian gave the direction
+  bool krylov = false;         // solved by CG on an earlier factor (else factorised)
+  int linear_iterations = 0;   // of this step's solve
+};
 
 struct NewtonOptions {
   Real tolerance = 1e-8;         // relative residual force at which the solve stops
@@ -49,6 +60,12 @@ struct NewtonOptions {
   // convergence); only where that fails is the matrix factorised. 0: every step factorises.
   int krylov_iterations = 0;
   Real krylov_forcing = 1e-2;
+  // Asked before each step: true stops the solve unconverged (NewtonReport::stopped), as a
+  // signal stops a run between steps (core/interruption.hpp). Empty: never.
+  std::function<bool()> stop_requested;
+  // Told after each step: on a paper-size lattice one Newton step is ~10 s and an increment
+  // that does not converge takes tens of minutes, so the run logs every step.
+  std::function<void(const NewtonStep&)> on_step;
 };
 
 struct NewtonReport {
@@ -65,6 +82,7 @@ struct NewtonReport {
   Real linear_residual = 0;       // relative residual of the last linear solve
   Real min_jacobian = 1;          // smallest det F_p at the end
   std::string failure;            // why it stopped without converging
+  bool stopped = false;           // stop_requested() ended it (not a failure of the method)
 };
 
 // u: the start on entry (prescribed unknowns may differ from their values), the result on

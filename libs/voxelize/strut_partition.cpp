@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <unordered_map>
 
 #include "core/errors.hpp"
+#include "core/units.hpp"
 
 namespace latmpm {
 namespace {
@@ -99,12 +99,7 @@ bool on_plate(const StrutGraph& g, const Eigen::Vector3d& x, double reach) {
   return false;
 }
 
-std::string millimetres(double metres) {
-  std::ostringstream os;
-  os.precision(4);
-  os << metres * 1e3 << " mm";
-  return os.str();
-}
+std::string millimetres(double metres) { return format_millimetres(metres, 4); }
 
 }  // namespace
 

@@ -103,3 +103,36 @@ TEST_CASE("A run stopped by a signal saves a checkpoint and resumes as if never 
   CHECK(read_text(stopped / "series.csv") == read_text(scratch.path() / "whole/series.csv"));
   CHECK(read_text(stopped / "snapshots.xmf") == read_text(scratch.path() / "whole/snapshots.xmf"));
 }
+
+TEST_CASE("A static solve stopped by a signal keeps its converged increments and says so", "[solve][signals]") {
+  const test::ScratchDir scratch("solve-static-signal");
+  test::write_points(test::tiny_column({}), scratch / "column.h5");
+  // The tiny column, neo-Hookean, 2 mm in 2000 static increments: far longer than the wait.
+  std::string scene = test::tiny_scene;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"\"0.2mm\"", "\"2mm\""},
+                          {"\"1050kg/m^3\" }", "\"1050kg/m^3\", model = \"neo_hookean\" }"}})
+    scene.replace(scene.find(from), from.size(), to);
+  scene += "[solver]\nkind = \"static\"\nincrements = 2000\n";
+  std::ofstream(scratch / "static.toml") << scene;
+
+  const pid_t pid = start_solve(scratch.path(), {"static.toml", "-o", "stopped", "--quiet"});
+  // The header, the start row and two converged increments.
+  for (int i = 0; i < 15000 && line_count(scratch.path() / "stopped/series.csv") < 4; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ::kill(pid, SIGTERM);
+  const int status = wait_status(pid);
+  const fs::path stopped = scratch.path() / "stopped";
+  INFO(read_text(scratch.path() / "stderr.txt"));
+  REQUIRE(status == 128 + SIGTERM);
+  CHECK_THAT(read_text(stopped / "status.toml"), Catch::Contains("status = \"interrupted\""));
+  CHECK_THAT(read_text(stopped / "status.toml"), Catch::Contains("exit = 143"));
+  CHECK_THAT(read_text(stopped / "log.txt"), Catch::Contains("stopped by SIGTERM after"));
+  CHECK_THAT(read_text(stopped / "log.txt"), Catch::Contains("Newton step 1: residual"));
+  CHECK_THAT(read_text(scratch.path() / "stderr.txt"), Catch::Contains("stopped by SIGTERM"));
+  const size_t rows = line_count(stopped / "series.csv");
+  CHECK(rows >= 4);
+  CHECK(rows < 2002);
+  CHECK(fs::exists(stopped / "series.h5"));
+  for (const auto& entry : fs::recursive_directory_iterator(stopped))
+    CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
+}

@@ -116,6 +116,11 @@ int solve(int argc, char** argv) {
     if (scene.solver.kind == SolverSpec::static_equilibrium && !cl.flag_set("check")) {
       if (resume) throw UsageError("--resume: a static solve has no checkpoint; run it again");
       const StaticSolveSummary st = run_static_scene(scene, provenance, run_dir, !cl.flag_set("quiet"));
+      if (st.signal) {
+        std::fprintf(stderr, "%s: stopped by %s after %d increments (travel %.6g m); the series holds them -> %s\n",
+                     cl.tool().c_str(), signal_name(st.signal), st.increments, st.travel, run_dir.c_str());
+        return exit_signal_base + st.signal;
+      }
       std::printf("%s: static %s, %d increments, travel %.6g m, %zu points, %zu unknowns, wall %.2f s -> %s\n",
                   cl.tool().c_str(), st.status.c_str(), st.increments, st.travel, st.points, st.unknowns,
                   st.wall_seconds, run_dir.c_str());
