@@ -39,6 +39,9 @@ struct Settings {
   // instead of a dense 4×4×4 gradient per particle. Same results to round-off; false keeps
   // the per-particle evaluation (the reference in tests/mpm).
   bool ddmp_on_grid = true;
+  // DDMP with sub-points (shape_ddmp_subpoints.hpp; Dhakal & Zhang 2016): the modified
+  // gradient as the mean over 8 sub-points of each point's domain (on the grid only).
+  bool ddmp_subpoints = false;
   // DDMP: a node with less mass than this fraction of ρ h³ (ρ the smallest density of a
   // deformable body) hands its mass, momentum and force on to its neighbours and reads its
   // velocity back from them (ddmp_grid.hpp, distribution coefficients).

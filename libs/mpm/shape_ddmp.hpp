@@ -40,6 +40,7 @@ struct DdmpShape : ShapeFlags {
   static constexpr bool uses_half_size = false;
   static constexpr bool stretches_with_f = false;
   static constexpr bool smoothed_gradient = true;
+  static constexpr bool per_node_gradient = true;
 };
 
 // DDMP with the smoothed part on the grid (Paper A Eq. 4; ddmp_grid.hpp): the particle

@@ -10,6 +10,7 @@ struct ShapeFlags {
   static constexpr bool trims_zero_planes = false;  // outer nodes often exactly zero: TrimmedStencils (stencil.hpp)
   static constexpr bool smoothed_gradient = false;  // DDMP: a smoothed gradient part (shape_ddmp.hpp)
   static constexpr bool smoothed_on_grid = false;   // DDMP: that part evaluated on the grid (DdmpGridShape)
+  static constexpr bool per_node_gradient = false;  // DDMP: a gradient part per stencil node, `smoothed[N³]`
   static constexpr bool uses_domain_vertices = false;  // CPDI: the stencil from the particle's domain (shape_cpdi.hpp)
 };
 

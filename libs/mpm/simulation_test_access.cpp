@@ -132,7 +132,8 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
           ddmp_corner_velocity_gradient(st, buffer, L);
           for (int r = 0; r < 3; ++r)
             for (int k = 0; k < 3; ++k) grad(r, k) += L[r * 3 + k];
-        } else if constexpr (Shape::smoothed_gradient)
+        }
+        if constexpr (Shape::per_node_gradient)
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
               for (int k = 0; k < N; ++k) {

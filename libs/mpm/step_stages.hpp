@@ -100,7 +100,7 @@ template <class F>
 void with_solver_shape(const Settings& settings, F&& f) {
   with_shape_function(settings.shape_function, [&](auto shape) {
     if constexpr (std::is_same_v<decltype(shape), DdmpShape>)
-      if (settings.ddmp_on_grid) return f(DdmpGridShape{});
+      if (settings.ddmp_on_grid) return settings.ddmp_subpoints ? f(DdmpSubpointShape{}) : f(DdmpGridShape{});
     return f(shape);
   });
 }

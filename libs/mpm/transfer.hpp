@@ -19,6 +19,7 @@
 #include "mpm/material_model.hpp"
 #include "mpm/node_lanes.hpp"
 #include "mpm/particles.hpp"
+#include "mpm/shape_ddmp_subpoints.hpp"
 #include "mpm/shape_functions.hpp"
 
 namespace latmpm::mpm {
@@ -104,6 +105,9 @@ template <class Shape, bool Gradient = true>
 inline auto particle_stencil(const Particles& ps, size_t p, Real h, const BucketBuffer& buffer) {
   if constexpr (Shape::uses_domain_vertices)
     return make_cpdi_box_stencil(ps, p, h);
+  else if constexpr (Shape::smoothed_on_grid && Shape::per_node_gradient)
+    return make_ddmp_subpoint_stencil(ps.position[p], ps.deformation[p].template cast<Real>(),
+                                      stencil_half_size<Shape>(ps, p, h), 1 / h, buffer.ddmp_alpha);
   else if constexpr (Shape::smoothed_on_grid)
     return make_ddmp_corner_stencil(ps.position[p], 1 / h, buffer.ddmp_alpha, buffer.ddmp_alpha_cache, p);
   else if constexpr (Shape::smoothed_gradient)
@@ -217,8 +221,10 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         if constexpr (Mode::force && Shape::smoothed_on_grid) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
           scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p].template cast<Real>(), buffer);
-        } else if constexpr (Mode::force && Shape::smoothed_gradient) {
-          // DDMP's smoothed part of the modified gradient (Paper A Eq. 4, 7): not a tensor product.
+        }
+        if constexpr (Mode::force && Shape::per_node_gradient) {
+          // DDMP's gradient part that is not a tensor product (Paper A Eq. 4, 7): the smoothed
+          // part per point, or the sub-points' α part (shape_ddmp_subpoints.hpp).
           for (int i = 0; i < N; ++i)
             for (int j = 0; j < N; ++j)
               for (int k = 0; k < N; ++k) {
@@ -286,9 +292,12 @@ template <bool Gradient, int N>
   return out;
 }
 
-// DDMP: the tensor-product part (S, α∇S), then the smoothed gradient node by node.
-template <bool Gradient>
-[[gnu::always_inline]] inline Interpolation interpolate(const DdmpStencil& st, const BucketBuffer& buffer) {
+// DDMP: the tensor-product part (S, α∇S), then the gradient part per node (the smoothed
+// part, or with sub-points their α part).
+template <bool Gradient, class DdmpStencilType,
+          class = std::enable_if_t<std::is_same_v<DdmpStencilType, DdmpStencil> ||
+                                   std::is_same_v<DdmpStencilType, DdmpSubpointStencil>>>
+[[gnu::always_inline]] inline Interpolation interpolate(const DdmpStencilType& st, const BucketBuffer& buffer) {
   Interpolation out = interpolate<Gradient, 4>(static_cast<const Stencil<4>&>(st), buffer);
   if constexpr (Gradient) {
     const Real* first = buffer.data.data() + buffer.offset(st.base[0], st.base[1], st.base[2]);

@@ -2,13 +2,16 @@
 // Σ_i x_i ⊗ ∇̄S_i = I — at random points, on and next to cell faces; its smoothed part
 // equals Eq. 7 with V_j and ∫ S_j ∇S_i dV integrated by Gauss quadrature over the grid; the
 // partition function α is Eq. 5 as printed, zero on cell faces and positive inside.
+// With sub-points the point's gradient is the mean of Eq. 7 at its octant centres.
 // (Eq. 8 next to free surfaces, through the solver's passes: test_ddmp_grid.cpp.)
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <vector>
 
 #include "mpm/settings.hpp"
 #include "mpm/shape_ddmp.hpp"
+#include "mpm/shape_ddmp_subpoints.hpp"
 
 using namespace latmpm::mpm;
 
@@ -157,4 +160,59 @@ TEST_CASE("DDMP's default partition function is Eq. 5 as printed, continuous acr
   // Continuous across a face: the same value (0) from both cells' sides.
   CHECK(ddmp_partition(Vec3(1 - 1e-15, 0.4, 0.6)) < 1e-4);
   CHECK(ddmp_partition(Vec3(1e-15, 0.4, 0.6)) < 1e-4);
+}
+
+// DDMP with sub-points (shape_ddmp_subpoints.hpp): the point's α part and corner weights,
+// completed with the smoothing stencil G(i − j)/h of the grid pass, equal the mean of the
+// per-particle modified gradient (make_ddmp_stencil, Eq. 7 in closed form) at the 8 octant
+// centres x_p + F (±l/2), node by node over the 6×6×6 box they reach.
+TEST_CASE("DDMP with sub-points averages Eq. 7 over the octant centres of the point's domain", "[mpm][ddmp]") {
+  const Real h = 0.4e-3;
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  const DdmpPartition alpha{};
+  for (int n = 0; n < 200; ++n) {
+    const Vec3 x = h * Vec3(10 * u(rng), 10 * u(rng), 10 * u(rng));
+    Mat3 F = Mat3::Identity();
+    for (int i = 0; i < 9; ++i) F(i) += 0.3 * u(rng);
+    const Vec3 half = h / 4 * Vec3(1 + 0.5 * u(rng), 1 + 0.5 * u(rng), 1 + 0.5 * u(rng));
+    const DdmpSubpointStencil st = make_ddmp_subpoint_stencil(x, F, half, 1 / h, alpha);
+    // The box: nodes base − 1 … base + 4 per axis (the corners' smoothing reaches one more).
+    constexpr int W = 6;
+    std::vector<Vec3> tested(W * W * W, Vec3::Zero()), reference(W * W * W, Vec3::Zero());
+    auto at = [&](std::vector<Vec3>& box, int i, int j, int k) -> Vec3& {
+      return box[size_t(((i - st.base[0] + 1) * W + (j - st.base[1] + 1)) * W + (k - st.base[2] + 1))];
+    };
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k) {
+          const int node = (i * 4 + j) * 4 + k;
+          at(tested, st.base[0] + i, st.base[1] + j, st.base[2] + k) += st.smoothed[node];
+          for (int di = -1; di <= 1; ++di)
+            for (int dj = -1; dj <= 1; ++dj)
+              for (int dk = -1; dk <= 1; ++dk)  // node i' = j + d gets corner_j G(d) / h
+                at(tested, st.base[0] + i + di, st.base[1] + j + dj, st.base[2] + k + dk) +=
+                    st.corner[node] / h *
+                    Vec3(ddmp_smoothing_slope(di) * ddmp_smoothing_mass(dj) * ddmp_smoothing_mass(dk),
+                         ddmp_smoothing_mass(di) * ddmp_smoothing_slope(dj) * ddmp_smoothing_mass(dk),
+                         ddmp_smoothing_mass(di) * ddmp_smoothing_mass(dj) * ddmp_smoothing_slope(dk));
+        }
+    Real largest = 0;
+    for (int s = 0; s < 8; ++s) {
+      const Vec3 d((s & 4 ? 0.5 : -0.5) * half[0], (s & 2 ? 0.5 : -0.5) * half[1], (s & 1 ? 0.5 : -0.5) * half[2]);
+      const DdmpStencil sub = make_ddmp_stencil(x + F * d, 1 / h, alpha);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          for (int k = 0; k < 4; ++k) {
+            const Vec3 g = modified_gradient(sub, i, j, k) / 8;
+            at(reference, sub.base[0] + i, sub.base[1] + j, sub.base[2] + k) += g;
+            largest = std::max(largest, g.norm());
+          }
+    }
+    Real error = 0;
+    for (size_t e = 0; e < tested.size(); ++e) error = std::max(error, (tested[e] - reference[e]).norm());
+    INFO("x/h = " << (x / h).transpose());
+    REQUIRE(largest > 0);
+    CHECK(error < 1e-12 * largest);
+  }
 }

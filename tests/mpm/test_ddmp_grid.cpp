@@ -3,7 +3,8 @@
 // equals the per-particle modified gradient ∇̄S (Eq. 7) it regroups, nodal forces and L̄
 // to round-off; Eq. 8 holds next to the free surfaces (Σ_i f_i = 0,
 // Σ_i x_i ⊗ f_i = −Σ_p V_p σ_p, and a linear velocity field gives its gradient exactly);
-// small-mass nodes hand on their mass, momentum and force without loss.
+// small-mass nodes hand on their mass, momentum and force without loss. Eq. 8 also with
+// sub-points (shape_ddmp_subpoints.hpp).
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -21,7 +22,7 @@ using namespace latmpm::mpm::test;
 namespace {
 // A 10×8×9-cell block at ppc 2 with a spherical hole and a fifth of its points dropped at
 // random, jittered, with a random F (det > 0) and a random stress per point.
-std::unique_ptr<Simulation> deformed_block(bool on_grid, unsigned seed) {
+std::unique_ptr<Simulation> deformed_block(bool on_grid, unsigned seed, bool subpoints = false) {
   const Real h = 1e-3;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<Real> u(-1, 1);
@@ -35,6 +36,7 @@ std::unique_ptr<Simulation> deformed_block(bool on_grid, unsigned seed) {
   s.shape_function = ShapeFunctionKind::ddmp;
   s.threads = 2;
   s.ddmp_on_grid = on_grid;
+  s.ddmp_subpoints = subpoints;
   auto sim = std::make_unique<Simulation>(points, std::vector<BodySettings>{deformable("block", elastic(1e6, 0.3, 1000))}, s);
   Particles& ps = sim->mutable_particles();
   for (size_t p = 0; p < ps.size(); ++p) {
@@ -97,8 +99,10 @@ TEST_CASE("DDMP's force and velocity gradient on the grid equal the per-particle
 
 TEST_CASE("DDMP's modified gradient satisfies Eq. 8 next to free surfaces, through the solver's passes",
           "[mpm][ddmp]") {
-  const bool on_grid = GENERATE(true, false);
-  const auto sim_ptr = deformed_block(on_grid, 5);
+  // 0: per particle, 1: on the grid, 2: on the grid with sub-points (shape_ddmp_subpoints.hpp).
+  const int variant = GENERATE(0, 1, 2);
+  INFO("variant " << variant);
+  const auto sim_ptr = deformed_block(variant > 0, 5, variant == 2);
   Simulation& sim = *sim_ptr;
   const Real h = sim.settings().cell_size;
   SimulationTestAccess::particles_to_grid(sim);
