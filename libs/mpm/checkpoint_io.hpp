@@ -23,8 +23,8 @@ namespace latmpm::mpm {
 
 // 1: positional scalars (before issue 13); 2: named datasets.
 // 3: plastic_dissipation, cpdi_domain; 4: contact_energy, friction_dissipation;
-// 5: blend_dissipation; 6: grid_contact_dissipation.
-inline constexpr int64_t checkpoint_format_version = 6;
+// 5: blend_dissipation; 6: grid_contact_dissipation; 7: transfer_dissipation.
+inline constexpr int64_t checkpoint_format_version = 7;
 
 // How a value type is stored: its components per row (a real: 1; a fixed-size Eigen matrix —
 // Vec3, Mat3, SymTensor, CpdiParticleDomain and their ParticleReal forms — its coefficients).

@@ -46,7 +46,7 @@ struct StepDiagnostics {
   // point-defined fixed and driven bodies (zero for a fixed base); gravity_work: gravity's
   // work on the deformable material; rigid_energy: Σ kinetic + potential energy of the free
   // rigid bodies; energy_error: (kinetic + strain + plastic_dissipation + rigid_energy + contact_energy +
-  // friction_dissipation + blend_dissipation) − their initial value −
+  // friction_dissipation + blend_dissipation + transfer_dissipation) − their initial value −
   // constraint_work − gravity_work − work of driven rigid bodies. Zero for an exact
   // scheme; what is left is the transfers' and the time integration's own error (MPM's
   // grid-to-particle projection dissipates a little, so it drifts negative).
@@ -63,6 +63,13 @@ struct StepDiagnostics {
   // numerical dissipation of the scheme (zero for flip = 1), kept apart from the physical
   // ones (plastic, friction), J.
   Real blend_dissipation = 0;
+  // Energy the FLIP update's grid-to-point projection lost since the start: Σ over steps of
+  // Σ_I m_I |Δv_I|² − Σ_p m_p |Σ_I S_Ip Δv_I|², the grid's velocity increments against what
+  // the points receive of them (≥ 0 each step; step_stages.cpp, absorb_tallies, derives it).
+  // A numerical dissipation of the transfer, largest where the increments vary within a
+  // stencil (impacts, contact forces on a few points, ringing at the grid's shortest
+  // wavelengths), kept apart like the blend's, J.
+  Real transfer_dissipation = 0;
   // Kinetic energy grid contact's rule (field_contact.hpp) took out of the nodes since the
   // start: at each contact node Σ_K ½ m_K (|v*_K|² − |v_K|²), the fields' free velocities
   // against the corrected ones, J. A nodal estimate, not in energy_error: it overcounts the

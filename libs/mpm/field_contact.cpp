@@ -123,6 +123,7 @@ void merge_tally(BucketTally& into, const BucketTally& from) {
   into.gravity_power += from.gravity_power;
   into.dissipation += from.dissipation;
   into.blend_dissipation += from.blend_dissipation;
+  into.increment_energy += from.increment_energy;
   into.max_speed_sq = std::max(into.max_speed_sq, from.max_speed_sq);
   into.max_wave_speed_sq = std::max(into.max_wave_speed_sq, from.max_wave_speed_sq);
   for (int a = 0; a < 3; ++a) {

@@ -49,11 +49,14 @@ void step_usl_fields(SolverState& s, StepContext& c, ContactFields& f, Real dt) 
   update_nodes(s, c, dt);
   apply_field_contact(s.grid, f, dt, c.settings.gravity, c.settings.cell_size);
   c.tallies.assign(c.tallies.size(), empty_tally());
+  Real node_increment = 0;  // each field's nodes, whose increments its points receive
   for_each_field(s, c, f, [&](int) {
+    node_increment += node_increment_energy(s, c);
     f.pass_tallies.assign(c.tallies.size(), empty_tally());
     gather_buckets<Shape, GatherAll>(s, c, dt, f.pass_tallies);
     for (size_t b = 0; b < c.tallies.size(); ++b) merge_tally(c.tallies[b], f.pass_tallies[b]);
   });
+  c.sums.node_increment_energy = node_increment;
   absorb_tallies(s, c, true, true, true);
   c.sums.grid_contact_dissipation = f.dissipated;
 }

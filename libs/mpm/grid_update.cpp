@@ -75,6 +75,22 @@ std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& 
   return rows;
 }
 
+std::vector<Real> node_increment_energy_rows(SparseGrid& grid) {
+  std::vector<Real> rows(grid.block_count(), 0);
+  for_each_block(grid, [&](size_t b, Real* block) {
+    Real sum = 0;
+    for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+      const Real* node = block + n * lane::count;
+      const Real m = node[lane::mass];
+      if (!(m > 0)) continue;
+      const Real dx = node[lane::force], dy = node[lane::force + 1], dz = node[lane::force + 2];
+      sum += Real(0.5) * m * (dx * dx + dy * dy + dz * dz);
+    }
+    rows[b] = sum;
+  });
+  return rows;
+}
+
 Reactions reactions_from_sums(const std::vector<Real>& sums) {
   const size_t nb = sums.size() / 4;
   Reactions out{std::vector<Vec3>(nb), std::vector<Real>(nb)};

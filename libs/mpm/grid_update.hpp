@@ -26,6 +26,12 @@ struct Reactions {
 // W), for the caller to sum in block order (Domain::sum_in_order, then reactions_from_sums).
 std::vector<Real> update_grid_velocities(SparseGrid& grid, Real dt, const Vec3& gravity,
                                          const std::vector<BodyInfo>& bodies);
+// Per block, Σ ½ m_I |Δv_I|² over its nodes (J), the lanes after the node update (m, v_new,
+// Δv = v_new − v_old): the kinetic energy the velocity increments carry on the grid, for the
+// caller to sum in block order. The points receive Σ_p ½ m_p |Σ_I S_Ip Δv_I|² of it
+// (transfer.hpp, BucketTally::increment_energy); twice the difference is the FLIP update's
+// projection loss (StepDiagnostics::transfer_dissipation).
+std::vector<Real> node_increment_energy_rows(SparseGrid& grid);
 // The per-body totals of such sums: force from values 4b..4b+2, power from 4b+3.
 Reactions reactions_from_sums(const std::vector<Real>& sums);
 

@@ -46,6 +46,8 @@ constexpr std::array<std::pair<RigidMotion, const char*>, 4> rigid_motion_names_
     {RigidMotion::scheduled, "scheduled"}}};
 constexpr std::array<std::pair<RigidCoupling, const char*>, 2> rigid_coupling_names_{{
     {RigidCoupling::no_slip, "no_slip"}, {RigidCoupling::penalty, "penalty"}}};
+constexpr std::array<std::pair<ContactReach, const char*>, 2> contact_reach_names_{{
+    {ContactReach::domain, "domain"}, {ContactReach::point, "point"}}};
 }  // namespace
 
 std::string to_string(ShapeFunctionKind kind) { return name_of(kind, shape_names); }
@@ -80,6 +82,9 @@ std::vector<std::string> rigid_coupling_names() { return names_in(rigid_coupling
 RigidShape parse_rigid_shape(const std::string& name) { return parse_name(name, rigid_shape_names_, "", ""); }
 RigidMotion parse_rigid_motion(const std::string& name) { return parse_name(name, rigid_motion_names_, "", ""); }
 RigidCoupling parse_rigid_coupling(const std::string& name) { return parse_name(name, rigid_coupling_names_, "", ""); }
+std::string to_string(ContactReach reach) { return name_of(reach, contact_reach_names_); }
+std::vector<std::string> contact_reach_names() { return names_in(contact_reach_names_); }
+ContactReach parse_contact_reach(const std::string& name) { return parse_name(name, contact_reach_names_, "", ""); }
 
 double default_cfl(ShapeFunctionKind shape) {
   for (const auto& [kind, name, cfl] : shape_names)

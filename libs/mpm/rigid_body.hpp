@@ -53,10 +53,20 @@ enum class RigidCoupling {
   penalty,  // penalty contact of the points against its surface, Coulomb friction (rigid_contact.hpp)
 };
 
+// Penalty contact: what of a point touches the surface (rigid_contact.hpp).
+enum class ContactReach {
+  domain,  // its domain's face: the surface offset outward by the point's half-sizes; the default
+  point,   // the material point itself (paper B Sec. 2.1: "a penetration of the material point's
+           // position"; Sec. 3.4: handled for the material points, not the CPDI vertices)
+};
+
 // Their names in scenes (names.cpp: one table each); parse_* throws InputError for another.
 std::string to_string(RigidShape shape);
 std::string to_string(RigidMotion motion);
 std::string to_string(RigidCoupling coupling);
+std::string to_string(ContactReach reach);
+std::vector<std::string> contact_reach_names();
+ContactReach parse_contact_reach(const std::string& name);
 std::vector<std::string> rigid_shape_names();
 std::vector<std::string> rigid_motion_names();
 std::vector<std::string> rigid_coupling_names();
@@ -81,6 +91,8 @@ struct RigidBodySettings {
   Real contact_stiffness = 0;
   // Penalty contact: Coulomb coefficient μ ≥ 0; 0 slides freely, infinity never slides.
   Real friction = 0;
+  // Penalty contact: a point touches with its domain's face or at its position.
+  ContactReach contact_reach = ContactReach::domain;
 };
 
 // Throws InputError(where, "rigid_bodies.<name>.<key>", ...) for an empty or inverted box, a

@@ -98,14 +98,19 @@ void update_penalty_contacts(Particles& ps, const std::vector<ContactMaterial>& 
       const Vec3& x = ps.position[p];
       int32_t& k = ps.contact_body[p];
       Vec3& anchor = ps.contact_anchor[p];
+      // The domain's half-sizes, or none where the body takes contact at the material point.
+      const Vec3 half = ps.half_size0[p].cast<Real>();
+      auto reach = [&](size_t body) {
+        return bodies[body].contact_reach == ContactReach::point ? Vec3(Vec3::Zero()) : half;
+      };
       ContactProbe probe;
       if (k >= 0) {
-        probe = probe_contact(bodies[size_t(k)], states[size_t(k)].displacement, x, ps.half_size0[p].cast<Real>());
+        probe = probe_contact(bodies[size_t(k)], states[size_t(k)].displacement, x, reach(size_t(k)));
         if (!probe.penetrates) k = -1;  // it left the surface: contact ends
       }
       if (k < 0) {
         for (size_t body : penalty) {
-          probe = probe_contact(bodies[body], states[body].displacement, x, ps.half_size0[p].cast<Real>());
+          probe = probe_contact(bodies[body], states[body].displacement, x, reach(body));
           if (!probe.penetrates) continue;
           // First contact: the attachment point is the closest point of the surface.
           k = int32_t(body);

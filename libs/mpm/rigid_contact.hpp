@@ -1,7 +1,8 @@
 // Penalty contact of material points against the surface of a geometric rigid body, with
 // Coulomb friction (paper B Sec. 2.1, after Ding & Schroeder; docs/solver.md, "Penalty
 // contact"). Per point, with its domain's reach r_p beyond its position (the material's
-// surface, not the point, touches the body):
+// surface, not the point, touches the body; r_p = 0 for a body with ContactReach::point,
+// paper B's contact at the material point):
 //   - it is in contact while it penetrates the body's surface offset outward by r_p; at
 //     first contact its attachment point x_A is the closest point of that offset surface;
 //   - while in contact the body pushes it with f = κ (x_A − x_p): the normal part

@@ -286,6 +286,7 @@ void Simulation::finish_step(Real dt, Real stable) {
   d.gravity_work += dt * c.sums.gravity_power;
   d.kinetic_energy = c.sums.kinetic;
   d.blend_dissipation += c.sums.blend_dissipation;
+  d.transfer_dissipation += c.sums.transfer_dissipation;
   d.grid_contact_dissipation += c.sums.grid_contact_dissipation;
   d.strain_energy = c.sums.strain;
   d.plastic_dissipation = c.sums.dissipation;
@@ -293,7 +294,7 @@ void Simulation::finish_step(Real dt, Real stable) {
 
   carried.max_speed = std::max(d.max_speed, ledger.max_speed);
   d.energy_error = d.kinetic_energy + d.strain_energy + d.plastic_dissipation + d.rigid_energy + d.contact_energy +
-                   d.friction_dissipation + d.blend_dissipation - carried.initial_energy -
+                   d.friction_dissipation + d.blend_dissipation + d.transfer_dissipation - carried.initial_energy -
                    state_.carried.initial_rigid_energy - d.constraint_work - d.gravity_work -
                    state_.carried.driven_rigid_work;
   if (c.sums.max_wave_speed_sq > 0) carried.max_wave_speed = std::sqrt(c.sums.max_wave_speed_sq);

@@ -39,6 +39,7 @@ void for_each_solver_scalar(D& d, C& carried, Visit&& visit) {
   visit("contact_energy", d.contact_energy, ValueRange{});
   visit("friction_dissipation", d.friction_dissipation, ValueRange{});
   visit("blend_dissipation", d.blend_dissipation, ValueRange{});
+  visit("transfer_dissipation", d.transfer_dissipation, ValueRange{});
   visit("grid_contact_dissipation", d.grid_contact_dissipation, ValueRange{});
   visit("energy_error", d.energy_error, ValueRange{});
   visit("carried_max_speed", carried.max_speed, ValueRange{});

@@ -78,19 +78,33 @@ namespace {
 
 void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient) {
   PassSums local;
-  std::vector<Real> rows;  // per bucket: kinetic, strain, dissipation, gravity power, blend dissipation
+  // per bucket: kinetic, strain, dissipation, gravity power, blend dissipation, increment energy
+  std::vector<Real> rows;
   for (size_t bi = 0; bi < c.tallies.size(); ++bi) {
     const BucketTally& t = c.tallies[bi];
     if (t.fault != ParticleFault::none) throw_fault(s, c, t.fault, t.fault_particle);
-    rows.insert(rows.end(), {t.kinetic, t.strain, t.dissipation, t.gravity_power, t.blend_dissipation});
+    rows.insert(rows.end(),
+                {t.kinetic, t.strain, t.dissipation, t.gravity_power, t.blend_dissipation, t.increment_energy});
     local.max_speed_sq = std::max(local.max_speed_sq, t.max_speed_sq);
     local.max_wave_speed_sq = std::max(local.max_wave_speed_sq, t.max_wave_speed_sq);
   }
-  const std::vector<Real> sum = c.domain.sum_in_order(bucket_order_keys(s.buckets.buckets()), rows, 5);
+  const std::vector<Real> sum = c.domain.sum_in_order(bucket_order_keys(s.buckets.buckets()), rows, 6);
   PassSums& sums = c.sums;
   if (velocity) {
     sums.kinetic = sum[0];
     sums.blend_dissipation = sum[4];
+    // The FLIP update raises the points' kinetic energy by Σ_I p_I·Δv_I + Σ_p ½ m_p |Δv_p|²
+    // (p_I = Σ_p S_Ip m_p v_p); the step's work, taken at the new nodal velocities (the
+    // strain rate, the points' moves), is dt Σ_I f_I·v_I^{n+1} = Σ_I p_I·Δv_I + Σ_I m_I |Δv_I|².
+    // So the balance changes by −Σ_p ½ m_p |Δv_p|² − (Σ_I m_I |Δv_I|² − Σ_p m_p |Δv_p|²): the
+    // first term is the explicit step's kick at the points, which the strain energy's
+    // second-order gain ½ dt² V L:C:L returns on average (a bounded oscillation); the second
+    // is the projection's definite loss (Jensen: ≥ 0 for weights ≥ 0 that sum to one),
+    // booked like the blend's (docs/solver.md, "Energy"). Only where the strain rate is taken
+    // at the new nodal velocities (USL, `gradient` in this pass): MUSL's work is at the
+    // remapped velocity, Σ_p m_p v_p^{n+1}·Δv_p, and USF's at v^n, Σ_I p_I·Δv_I, so their
+    // balances change by ∓Σ_p ½ m_p |Δv_p|² alone, with no projection term.
+    sums.transfer_dissipation = gradient ? 2 * (sums.node_increment_energy - sum[5]) : 0;
     sums.max_speed_sq = c.domain.reduce_max(local.max_speed_sq);
   }
   if (position) {
@@ -109,14 +123,24 @@ BoundaryPass boundary_pass(SolverState& s, StepContext& c, Real dt) {
           c.penalty_contact ? &c.contact : nullptr, &c.domain};
 }
 
+namespace {
+// The grid's block keys, for per-block sums in block order (a block several processes hold
+// counts once: Domain::sum_in_order).
+std::vector<uint64_t> block_keys(const SparseGrid& grid) {
+  std::vector<uint64_t> keys(grid.block_count());
+  for (size_t b = 0; b < keys.size(); ++b) keys[b] = grid.key(b);
+  return keys;
+}
+}  // namespace
+
 void update_nodes(SolverState& s, StepContext& c, Real dt) {
   std::vector<Real> rows = update_grid_velocities(s.grid, dt, c.settings.gravity, c.body_info);
-  // Per block, in block order (a block several processes hold counts once: sum_in_order).
-  const size_t width = 4 * c.body_info.size();
-  std::vector<uint64_t> keys(s.grid.block_count());
-  for (size_t b = 0; b < keys.size(); ++b) keys[b] = s.grid.key(b);
-  c.reactions = reactions_from_sums(c.domain.sum_in_order(keys, rows, width));
+  c.reactions = reactions_from_sums(c.domain.sum_in_order(block_keys(s.grid), rows, 4 * c.body_info.size()));
   constrain_boundaries(s, c, dt);
+}
+
+Real node_increment_energy(SolverState& s, StepContext& c) {
+  return c.domain.sum_in_order(block_keys(s.grid), node_increment_energy_rows(s.grid), 1)[0];
 }
 
 void constrain_boundaries(SolverState& s, StepContext& c, Real dt) {

@@ -47,6 +47,11 @@ using GatherStrainAndPosition = GatherMode<false, true, lane::force>;
 struct PassSums {
   Real kinetic = 0, strain = 0, dissipation = 0, gravity_power = 0;
   Real blend_dissipation = 0;  // of this step's velocity pass (BucketTally)
+  // The grid's Σ ½ m_I |Δv_I|² before the velocity pass (node_increment_energy), and the
+  // FLIP update's projection loss, twice what of it the pass did not give the points
+  // (absorb_tallies; J, ≥ 0 where the points' weights are the ones that made the nodes' mass).
+  Real node_increment_energy = 0;
+  Real transfer_dissipation = 0;
   Real grid_contact_dissipation = 0;  // of this step's grid contact rule (ContactFields::dissipated)
   Real max_speed_sq = 0, max_wave_speed_sq = 0;
 };
@@ -114,6 +119,8 @@ void take_cell_ranges(SolverState& s, StepContext& c);
 void absorb_tallies(SolverState& s, StepContext& c, bool velocity, bool position, bool gradient);
 // The node update (grid_update.hpp) and its reactions, then every boundary's constraint.
 void update_nodes(SolverState& s, StepContext& c, Real dt);
+// Σ ½ m_I |Δv_I|² over the grid's nodes after the node update (J), in block order.
+Real node_increment_energy(SolverState& s, StepContext& c);
 // After the node update: every boundary constrains its nodes and keeps its reaction.
 void constrain_boundaries(SolverState& s, StepContext& c, Real dt);
 // The boundaries' velocities on the field in lanes [lane, lane + 3), without reactions.
@@ -319,6 +326,8 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
 
 template <class Shape, class Mode>
 void gather(SolverState& s, StepContext& c, Real dt) {
+  // The projection's loss is booked for USL only (absorb_tallies): the node sum is needed there.
+  if constexpr (Mode::velocity && Mode::gradient_lane >= 0) c.sums.node_increment_energy = node_increment_energy(s, c);
   gather_buckets<Shape, Mode>(s, c, dt, c.tallies);
   absorb_tallies(s, c, Mode::velocity, Mode::position, Mode::gradient_lane >= 0);
 }

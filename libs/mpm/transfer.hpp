@@ -64,6 +64,9 @@ struct BucketTally {
   // Kinetic energy the FLIP/PIC blend removed in this pass: Σ ½ m (|v_FLIP|² − |v|²), v_FLIP
   // = v + Σ S Δv_I the pure FLIP update and v the blended one, J. A numerical dissipation.
   Real blend_dissipation = 0;
+  // Kinetic energy of the points' FLIP increments in this pass: Σ ½ m |Δv_p|², Δv_p = Σ S Δv_I
+  // (J). Against the grid's Σ ½ m_I |Δv_I|² it gives the projection loss (grid_update.hpp).
+  Real increment_energy = 0;
   Real max_speed_sq = 0;  // m²/s²
   Real max_wave_speed_sq = 0;  // m²/s², from the smallest J of each run (see below)
   std::array<int, 3> cell_min{}, cell_max{};
@@ -398,7 +401,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
   };
 
   // Sums of the bucket, one lane per particle slot of a group, added up at the end.
-  Pack kinetic{}, strain{}, gravity_power{}, dissipation{}, blend_dissipation{};
+  Pack kinetic{}, strain{}, gravity_power{}, dissipation{}, blend_dissipation{}, increment_energy{};
   for (uint32_t run_index = b.run_begin; run_index < b.run_end; ++run_index) {
     const BodyRun& run = runs[run_index - b.run_begin];
     if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
@@ -479,6 +482,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             // 2. Update the group's particles together, one per lane.
             if constexpr (Mode::velocity) {
               Pack flip_speed_sq{};
+              increment_energy += Real(0.5) * m * (dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
               for (int a = 0; a < 3; ++a) {
                 const Pack v_flip = v[a] + dv[a];
                 flip_speed_sq += v_flip * v_flip;
@@ -549,6 +553,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     tally.strain += strain[q];
     tally.dissipation += dissipation[q];
     tally.blend_dissipation += blend_dissipation[q];
+    tally.increment_energy += increment_energy[q];
     tally.gravity_power += gravity_power[q];
   }
 }

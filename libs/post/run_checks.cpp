@@ -68,7 +68,8 @@ RunChecks run_checks(const RunAnalysis& a) {
     // the FLIP/PIC blend removed (numerical, counted like the solver's energy_error, so that
     // what is left is the scheme's own error); older series lack them.
     std::vector<double> pd(w.size(), 0.0);
-    for (const char* name : {"plastic_dissipation", "contact_energy", "friction_dissipation", "blend_dissipation"})
+    for (const char* name :
+         {"plastic_dissipation", "contact_energy", "friction_dissipation", "blend_dissipation", "transfer_dissipation"})
       if (s.has(name)) {
         const auto& column = s.column(name, a.run.path);
         for (size_t i = 0; i < std::min(pd.size(), column.size()); ++i) pd[i] += column[i];

@@ -22,7 +22,7 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"gravity_work", "J", "work of gravity on the deformable material"},
       {"energy_error", "J",
        "kinetic + strain + plastic dissipation + flyer energy + contact energy + friction dissipation + blend "
-       "dissipation - initial - constraint_work - gravity_work - driven rigid bodies' work"},
+       "dissipation + transfer dissipation - initial - constraint_work - gravity_work - driven rigid bodies' work"},
       {"plastic_dissipation", "J", "plastic work of the J2 points since the start, sum V0 x j2_plastic_work"},
       {"contact_energy", "J", "energy held in the penalty bodies' contact springs, sum |f|^2 / (2 kappa)"},
       {"friction_dissipation", "J", "energy dissipated by the penalty bodies' Coulomb friction since the start"},
@@ -34,6 +34,9 @@ std::vector<SeriesColumn> solver_series_columns(bool with_flyer) {
       {"grid_contact_dissipation", "J",
        "kinetic energy grid contact ([contact]) took out of its contact nodes since the start, sum 1/2 m_K (|v*_K|^2 - "
        "|v_K|^2): a nodal estimate, not in energy_error (it overcounts the points' loss, docs/contact.md)"},
+      {"transfer_dissipation", "J",
+       "energy the FLIP update's grid-to-point projection lost since the start, sum m_I |dv_I|^2 - sum m_p "
+       "|dv_p|^2 over steps (numerical)"},
   };
   if (with_flyer) {
     const std::vector<SeriesColumn> flyer = {
@@ -85,7 +88,7 @@ std::vector<double> SolverSeries::row(const mpm::Simulation& sim, const mpm::Ste
                              d.external_work,  d.max_speed,      d.constraint_work,
                              d.gravity_work,   d.energy_error,   d.plastic_dissipation,
                              d.contact_energy, d.friction_dissipation, 0.0 - average_(sim),
-                             d.blend_dissipation, d.grid_contact_dissipation};
+                             d.blend_dissipation, d.grid_contact_dissipation, d.transfer_dissipation};
   if (flyer)
     row.insert(row.end(), {0.0 + load_flyer, 0.0 + Eigen::Vector3d(flyer->velocity).dot(axis),
                            0.0 + Eigen::Vector3d(flyer->displacement).dot(axis), flyer->kinetic_energy,

@@ -65,14 +65,14 @@ void read(TableReader& m, mpm::MaterialParameters& p) {
 }
 
 namespace {
-// contact = { model, friction, stiffness }: how a rigid body acts on the material.
+// contact = { model, friction, stiffness, reach }: how a rigid body acts on the material.
 void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
   auto contact = b.optional_table("contact");
   if (!contact) return;
   body.coupling = mpm::parse_rigid_coupling(
       contact->choice("model", mpm::rigid_coupling_names(), mpm::to_string(mpm::RigidCoupling::no_slip)));
   if (body.coupling == mpm::RigidCoupling::no_slip) {
-    for (const char* key : {"friction", "stiffness"})
+    for (const char* key : {"friction", "stiffness", "reach"})
       if (contact->has(key)) contact->fail(key, "only penalty contact (model = \"penalty\") takes it");
   } else {
     // μ: a number ≥ 0 (0 slides freely) or "stick" (never slides).
@@ -88,6 +88,8 @@ void read_contact(TableReader& b, mpm::RigidBodySettings& body) {
       body.contact_stiffness = contact->quantity("stiffness", dimension::stiffness);
       if (!(body.contact_stiffness > 0)) contact->fail("stiffness", "must be positive (leave it out for the default)");
     }
+    body.contact_reach = mpm::parse_contact_reach(
+        contact->choice("reach", mpm::contact_reach_names(), mpm::to_string(mpm::ContactReach::domain)));
   }
   contact->finish();
 }
@@ -163,6 +165,13 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   if (krylov_iterations < 0 || krylov_iterations > 100000)
     solver.fail("krylov_iterations", "must lie in [0, 100000] (0: every Newton step factorises)");
   s.krylov_iterations = int(krylov_iterations);
+  const long newton_iterations = solver.integer("newton_iterations", s.newton_iterations);
+  if (newton_iterations < 1 || newton_iterations > 10000)
+    solver.fail("newton_iterations", "must lie in [1, 10000] (Newton steps of an increment)");
+  s.newton_iterations = int(newton_iterations);
+  const long bisections = solver.integer("bisections", s.bisections);
+  if (bisections < 0 || bisections > 60) solver.fail("bisections", "must lie in [0, 60] (halvings of the end's bracket)");
+  s.bisections = int(bisections);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

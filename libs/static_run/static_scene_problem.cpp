@@ -116,6 +116,7 @@ StaticSceneProblem make_static_problem(const Scene& scene, const PointSet& point
   out.loading.check_stability = scene.solver.statics.check_stability;
   out.loading.predictor = scene.solver.statics.predictor;
   out.loading.max_step_growth = scene.solver.statics.max_increment_growth;
+  out.loading.bisections = scene.solver.statics.bisections;
   out.problem->set_stabilisation(scene.solver.statics.stabilisation);
   return out;
 }

@@ -105,9 +105,13 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   statics::NewtonOptions newton;
   newton.tolerance = scene.solver.statics.tolerance;
   newton.krylov_iterations = scene.solver.statics.krylov_iterations;
+  newton.max_iterations = scene.solver.statics.newton_iterations;
   newton.stop_requested = [] { return interruption_signal() != 0; };
 
   std::filesystem::create_directories(run_dir);
+  // From the first file written: a first signal stops the path between Newton steps (or before
+  // its first), so the run directory always ends with its status.toml.
+  InterruptionDeferral deferral;
   {
     OutputFile out(run_dir + "/scene.toml", run_dir + "/scene.toml");
     std::ofstream file(out.temp_path(), std::ios::trunc);
@@ -166,23 +170,24 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
     log.line(line);
     if (progress) std::cerr << "latmpm-solve: " << line << "\n";
   };
-  // Every Newton step in the log: a paper-size increment that does not converge is tens of
-  // minutes of steps (docs/statics.md), which the increment lines alone leave silent.
-  newton.on_step = [&](const statics::NewtonStep& s) {
-    log.line("  increment " + std::to_string(step + 1) + ", Newton step " + std::to_string(s.iteration) +
-             ": residual " + format_number("%.2e", s.residual_before) + ", " +
-             (s.true_tangent ? "true tangent" : "projected") + ", " +
-             (s.krylov ? "Krylov (" + std::to_string(s.linear_iterations) + " CG)" : std::string("factorised")) +
-             ", step " + format_number("%.3g", s.alpha));
-  };
   // Iterative solves (CG, AMG) to 1e-4 of the Newton tolerance: at 1e-2 of it a linear
   // problem took two Newton steps instead of one (QUICK T2P30, docs/statics.md).
   statics::SparseSolver solver(solver_kind, 1e-4 * scene.solver.statics.tolerance);
   std::vector<statics::Vec3> node_positions(problem.band().node_count());  // the AMG's rigid-body modes
   for (size_t n = 0; n < node_positions.size(); ++n) node_positions[n] = problem.band().node_position(n);
   solver.set_node_positions(std::move(node_positions));
+  // Every Newton step in the log: a paper-size increment that does not converge is tens of
+  // minutes of steps (docs/statics.md), which the increment lines alone leave silent.
+  newton.on_step = [&](const statics::NewtonStep& s) {
+    log.line("  increment " + std::to_string(step + 1) + ", Newton step " + std::to_string(s.iteration) +
+             ": residual " + format_number("%.2e", s.residual_before) + ", " +
+             (s.true_tangent ? "true tangent" : "projected") + ", " +
+             (s.krylov                ? "Krylov (" + std::to_string(s.linear_iterations) + " CG)"
+              : solver.is_direct()   ? std::string("factorised")
+                                     : std::to_string(s.linear_iterations) + " iterations") +
+             ", step " + format_number("%.3g", s.alpha));
+  };
   std::optional<statics::PhaseTimer> path_timer(path_time);
-  InterruptionDeferral deferral;  // a first signal stops the path between Newton steps
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);
   path_timer.reset();
   log.line("linear solver: " + solver.describe());

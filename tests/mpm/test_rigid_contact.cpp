@@ -345,3 +345,25 @@ TEST_CASE("A steel block thrown at a penalty floor at the SHPB's 10.6 m/s never 
   CHECK(reach - lowest <= 1.1 * bound);  // the offset surface's penetration stays under the bound
   CHECK(centre_of_mass_velocity(sim)[2] > 0);  // rebounding
 }
+
+TEST_CASE("A penalty body with reach = point takes contact at the material point, not at its domain's face",
+          "[mpm][contact]") {
+  // The 4 mm block (2 points per 1 mm cell: half-sizes 0.25 mm) with its lowest points'
+  // centres 0.1 mm below the floor's surface, no gravity. After one step the floor pushes on
+  // the 64 points of that layer only, each with κ times its depth: 0.1 mm at the point
+  // (paper B Sec. 2.1: contact is the material point's position in the body), 0.35 mm at the
+  // domain's lower face (the default). The next layer's centres are 0.4 mm above the surface
+  // and its faces 0.15 mm above: neither touches.
+  const Real kappa = 1.0, half = 0.25e-3, depth = 0.1e-3;
+  const ContactReach reach = GENERATE(ContactReach::point, ContactReach::domain);
+  Simulation sim(block_points(-depth - half), {deformable("block", elastic(E, nu, rho))}, block_settings(Vec3::Zero()));
+  RigidBodySettings floor = floor_plane(0.3, kappa);
+  floor.contact_reach = reach;
+  sim.add_rigid_body(floor);
+  sim.step();
+  const Real expected = bottom_points * kappa * (reach == ContactReach::point ? depth : depth + half);
+  const Vec3 force = sim.last_diagnostics().rigid[0].reaction;  // the floor's on the block
+  INFO("reach " << to_string(reach) << ": floor force " << force.transpose() << " N");
+  CHECK(force[2] == Approx(expected).epsilon(1e-9));
+  CHECK(force.head<2>().norm() < 1e-12 * expected);
+}

@@ -27,14 +27,20 @@ Scene parse(const std::string& text) {
 TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static one", "[scene]") {
   CHECK(parse(scene_with("")).solver.kind == SolverSpec::explicit_dynamics);
   const Scene s = parse(scene_with("kind = \"static\"\nincrements = 8\nlinear_solver = \"ldlt\"\n"
-                                   "tolerance = 1e-9\ncheck_stability = false\nstabilisation = 0.05"));
+                                   "tolerance = 1e-9\ncheck_stability = false\nstabilisation = 0.05\n"
+                                   "newton_iterations = 20\nbisections = 3"));
   CHECK(s.solver.kind == SolverSpec::static_equilibrium);
   CHECK(s.solver.statics.increments == 8);
   CHECK(s.solver.statics.linear_solver == statics::LinearSolverKind::ldlt);
   CHECK(s.solver.statics.tolerance == 1e-9);
   CHECK_FALSE(s.solver.statics.check_stability);
   CHECK(s.solver.statics.stabilisation == 0.05);
-  CHECK(parse(scene_with("kind = \"static\"")).solver.statics.stabilisation == 0.1);  // the default
+  CHECK(s.solver.statics.newton_iterations == 20);
+  CHECK(s.solver.statics.bisections == 3);
+  const Scene defaults = parse(scene_with("kind = \"static\""));
+  CHECK(defaults.solver.statics.stabilisation == 0.1);
+  CHECK(defaults.solver.statics.newton_iterations == 50);
+  CHECK(defaults.solver.statics.bisections == 6);
 }
 
 TEST_CASE("Static solver errors name the line and the key", "[scene]") {
@@ -54,5 +60,9 @@ TEST_CASE("Static solver errors name the line and the key", "[scene]") {
              Catch::Contains("linear_solver") && Catch::Contains("cholmod"));
   CHECK_THAT(message(scene_with("kind = \"static\"\nstabilisation = -0.1")),
              Catch::Contains("scene.toml:15") && Catch::Contains("stabilisation"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nnewton_iterations = 0")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("newton_iterations"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nbisections = -1")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("bisections"));
   CHECK_THAT(message(scene_with("kind = \"quasi\"")), Catch::Contains("kind"));
 }

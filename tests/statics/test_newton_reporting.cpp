@@ -86,3 +86,30 @@ TEST_CASE("A stop asked during a path ends it at the last converged increment", 
   CHECK(path.last_stable_load == path.points.back().load);
   CHECK(path.last_stable_load > 0);
 }
+
+TEST_CASE("A stop asked inside an increment's Newton solve ends the path at the increment before", "[statics]") {
+  const Real h = 1e-3, side = 4 * h;
+  StaticProblem problem = test::neo_hookean_cube(h);
+  PlatenLoading loading = test::clamped_platens(problem, 4);
+  loading.travel = 0.3 * side;
+  loading.increments = 4;
+  // First the whole path, for the number of Newton steps of the first increment.
+  SparseSolver whole_solver(LinearSolverKind::cholmod);
+  const PathReport whole = load_by_platen(problem, loading, whole_solver);
+  REQUIRE_FALSE(whole.ended);
+  REQUIRE(whole.points.size() == 4);
+  const int first = whole.points[0].newton_iterations;
+  REQUIRE(whole.points[1].newton_iterations >= 2);
+  // Then stopped after the first step of the second increment's solve.
+  SparseSolver solver(LinearSolverKind::cholmod);
+  int steps = 0;
+  NewtonOptions options;
+  options.on_step = [&](const NewtonStep&) { ++steps; };
+  options.stop_requested = [&] { return steps == first + 1; };
+  const PathReport path = load_by_platen(problem, loading, solver, options);
+  REQUIRE(path.stopped);
+  CHECK(steps == first + 1);  // no retry, no bisection after the stop
+  REQUIRE(path.points.size() == 1);
+  CHECK(path.points[0].load == Approx(whole.points[0].load).epsilon(1e-9));
+  CHECK(path.last_stable_travel == Approx(loading.travel / 4));
+}
