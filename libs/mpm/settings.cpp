@@ -21,6 +21,9 @@ void validate(const Settings& s, const std::string& where) {
   if (!positive(s.ddmp_alpha_exponent)) throw InputError(where, "ddmp_alpha_exponent", "must be positive");
   if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
     throw InputError(where, "ddmp_small_mass_fraction", "must lie in [0, 1)");
+  // A study option of DDMP's grid form: elsewhere it would be silently ignored.
+  if (s.ddmp_subpoints && !(s.shape_function == ShapeFunctionKind::ddmp && s.ddmp_on_grid))
+    throw InputError(where, "ddmp_subpoints", "needs shape ddmp with ddmp_on_grid");
   if (!positive(s.mass_scaling)) throw InputError(where, "mass_scaling", "must be positive");
   if (!s.gravity.allFinite()) throw InputError(where, "gravity", "must be finite");
   if (!(s.record_layer_thickness >= 0)) throw InputError(where, "record_layer_thickness", "must not be negative");

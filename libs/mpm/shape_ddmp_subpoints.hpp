@@ -58,14 +58,18 @@ inline DdmpSubpointStencil make_ddmp_subpoint_stencil(const Vec3& x, const Mat3&
   for (auto& g : st.smoothed) g.setZero();
   for (Real& c : st.corner) c = 0;
   constexpr int n = 8;
-  const Real h = 1 / inv_h;
   for (int s = 0; s < n; ++s) {
     const Vec3 d((s & 4 ? 0.5 : -0.5) * half[0], (s & 2 ? 0.5 : -0.5) * half[1], (s & 1 ? 0.5 : -0.5) * half[2]);
-    Vec3 xs = x + F * d;
-    for (int a = 0; a < 3; ++a)  // within one cell of the point's: the 4-node box
-      xs[a] = std::clamp(xs[a], (cell[a] - 1) * h, (cell[a] + 2 - Real(1e-9)) * h);
+    const Vec3 xs = x + F * d;
+    // Within one cell of the point's (the 4-node box), clamped in grid units: clamped in
+    // metres, (cell − 1)·h·(1/h) can round below cell − 1 and floor one cell off.
     int cs[3];
-    const Vec3 fs = ddmp_cell_position(xs, inv_h, cs);
+    Vec3 fs;
+    for (int a = 0; a < 3; ++a) {
+      const Real xi = std::clamp(xs[a] * inv_h, Real(cell[a] - 1), Real(cell[a] + 2) - Real(1e-9));
+      cs[a] = std::min(floor_to_int(xi), cell[a] + 1);
+      fs[a] = xi - Real(cs[a]);
+    }
     Real N[3][2], dN[3][2];
     int first[3];
     for (int a = 0; a < 3; ++a) {

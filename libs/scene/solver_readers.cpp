@@ -21,7 +21,8 @@ void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReade
   if (!(s.ddmp_alpha_exponent > 0)) grid.fail("ddmp_alpha_exponent", "must be positive");
   s.ddmp_on_grid = grid.boolean("ddmp_on_grid", s.ddmp_on_grid);
   s.ddmp_subpoints = grid.boolean("ddmp_subpoints", s.ddmp_subpoints);
-  if (s.ddmp_subpoints && !s.ddmp_on_grid) grid.fail("ddmp_subpoints", "needs ddmp_on_grid = true");
+  if (s.ddmp_subpoints && !(s.shape_function == mpm::ShapeFunctionKind::ddmp && s.ddmp_on_grid))
+    grid.fail("ddmp_subpoints", "needs shape = \"ddmp\" with ddmp_on_grid = true");
   s.ddmp_small_mass_fraction = grid.number("ddmp_small_mass_fraction", s.ddmp_small_mass_fraction);
   if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
     grid.fail("ddmp_small_mass_fraction", "must lie in [0, 1)");

@@ -205,6 +205,8 @@ TEST_CASE("Errors in overridden values name the --set option", "[scene]") {
       {"points.3.file=x.h5", "points.3.file", "past the end"},
       {"grid.cell.x=1", "grid.cell.x", "not a table"},
       {"grid.ddmp_small_mass_fraction=1", "grid.ddmp_small_mass_fraction", "[0, 1)"},
+      // A DDMP study option: with another shape it would be silently ignored.
+      {"grid.ddmp_subpoints=true", "grid.ddmp_subpoints", "needs shape"},
       {"novalue", "", "key=value"},
   }));
   try {
