@@ -63,13 +63,13 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     stable_travel = travel;
   };
 
-  // Solves at `travel` from u; true when it converged (u, point updated), false otherwise.
-  // With the predictor, Newton starts from the secant extrapolation of the last two
-  // equilibria (its prescribed unknowns exact); where that inverts a point or does not
-  // converge, from u itself, as without it.
   // A stop request (a signal: core/interruption.hpp) ends the path where it stands: no retry,
   // no bisection; the converged increments are the answer so far.
   bool stopped = false;
+  // Solves at `travel` from u; true when it converged (u, point updated), false otherwise
+  // (`stopped` set where a stop request ended a solve). With the predictor, Newton starts from
+  // the secant extrapolation of the last two equilibria (its prescribed unknowns exact); where
+  // that inverts a point or does not converge, from u itself, as without it.
   auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure) {
     const Dirichlet conditions = platen_conditions(problem, loading, travel);
     Vector trial = state;
