@@ -220,8 +220,10 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
              format_number("%.6g", path.last_stable_travel) + " m, " + format_number("%.6g", path.last_stable_load) + " N)");
   }
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The run's status as every latmpm-solve run names it (status.toml, the log's last line).
+  const std::string run_status = s.status == "not converged" ? "failed" : path.stopped ? "interrupted" : "finished";
   RunOutcome outcome;  // RUN_DIR/status.toml, as every latmpm-solve run writes it
-  outcome.status = s.status == "not converged" ? "failed" : path.stopped ? "interrupted" : "finished";
+  outcome.status = run_status;
   outcome.exit_status = path.stopped ? exit_signal_base + s.signal : 0;
   // Where the path ends, for pipelines reading status.toml (pipelines/lattice-stiffness/table.sh).
   outcome.reason = path.stopped ? std::string("stopped by ") + signal_name(s.signal)
@@ -240,7 +242,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   // latmpm-post reads "status:" (finished / failed) and "stopped:" (why) lines.
   if (path.ended && !path.stopped)
     log.line("stopped: the static path ends (" + path.end_reason + ") at travel " + format_number("%.6g", path.end_travel) + " m");
-  log.line(std::string("status: ") + (s.status == "not converged" ? "failed" : path.stopped ? "interrupted" : "finished") + " (static " + s.status +
+  log.line("status: " + run_status + " (static " + s.status +
            "), " + std::to_string(s.increments) + " increments, wall " + format_number("%.2f", s.wall_seconds) + " s");
   return s;
 }

@@ -80,27 +80,25 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       spent_iterations += r.iterations, spent_true_tangent += r.true_tangent_steps;
       spent_linear += r.linear_iterations, spent_krylov += r.krylov_steps;
     };
+    // One Newton solve from `trial`; false where a stop request ended it (then `stopped`).
+    auto solve = [&](const NewtonOptions& options) {
+      r = solve_equilibrium(problem, conditions, trial, solver, options);
+      stopped = r.stopped;
+      return !stopped;
+    };
     bool predicted = false;
     if (loading.predictor && u_before.size() == state.size() && stable_travel > travel_before) {
       trial += (travel - stable_travel) / (stable_travel - travel_before) * (state - u_before);
       for (size_t i = 0; i < conditions.fixed.size(); ++i)
         if (conditions.fixed[i]) trial[Eigen::Index(i)] = conditions.value[Eigen::Index(i)];
       predicted = problem.is_quadratic() || problem.min_jacobian(trial) > 0;
-      if (predicted) r = solve_equilibrium(problem, conditions, trial, solver, newton);
-    }
-    if (r.stopped) {
-      stopped = true;
-      return false;
+      if (predicted && !solve(newton)) return false;
     }
     point.predicted = predicted && r.converged;
     if (!point.predicted) {
       abandon();  // an abandoned prediction (or none: zeros)
       trial = state;
-      r = solve_equilibrium(problem, conditions, trial, solver, newton);
-      if (r.stopped) {
-        stopped = true;
-        return false;
-      }
+      if (!solve(newton)) return false;
     }
     if (!r.converged && r.krylov_steps + spent_krylov > 0) {
       // Krylov steps take other (inexact) directions: where a solve that took any fails, the
@@ -110,12 +108,8 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       NewtonOptions factorising = newton;
       factorising.krylov_iterations = 0;
       trial = state;
-      r = solve_equilibrium(problem, conditions, trial, solver, factorising);
       point.predicted = false;
-      if (r.stopped) {
-        stopped = true;
-        return false;
-      }
+      if (!solve(factorising)) return false;
     }
     if (!r.converged) {
       failure = r.failure;

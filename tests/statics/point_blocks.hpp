@@ -65,4 +65,12 @@ inline PlatenLoading clamped_platens(const StaticProblem& problem, int top_layer
   return loading;
 }
 
+// The clamped platens moving the top down by `travel` in `increments` equal steps.
+inline PlatenLoading clamped_platens(const StaticProblem& problem, int top_layer, Real travel, int increments) {
+  PlatenLoading loading = clamped_platens(problem, top_layer);
+  loading.travel = travel;
+  loading.increments = increments;
+  return loading;
+}
+
 }  // namespace latmpm::statics::test

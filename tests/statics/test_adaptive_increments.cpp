@@ -26,9 +26,7 @@ TEST_CASE("The load-maximum vertex is the peak of the parabola through three poi
 TEST_CASE("Adaptive increments follow the fixed-increment path in fewer increments", "[statics]") {
   const Real h = 1e-3, side = 4 * h;
   StaticProblem problem = test::neo_hookean_cube(h);
-  PlatenLoading loading = test::clamped_platens(problem, 4);
-  loading.travel = 0.4 * side;
-  loading.increments = 16;
+  PlatenLoading loading = test::clamped_platens(problem, 4, 0.4 * side, 16);
   NewtonOptions newton;
   newton.tolerance = 1e-10;
   auto run = [&](Real growth) {

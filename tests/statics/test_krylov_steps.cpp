@@ -50,9 +50,7 @@ TEST_CASE("CG preconditioned by an earlier factor solves a nearby matrix to its 
 TEST_CASE("Krylov steps follow the factorising path with fewer factorisations", "[statics]") {
   const Real h = 1e-3, side = 4 * h;
   StaticProblem problem = test::neo_hookean_cube(h);
-  PlatenLoading loading = test::clamped_platens(problem, 4);
-  loading.travel = 0.4 * side;
-  loading.increments = 8;
+  PlatenLoading loading = test::clamped_platens(problem, 4, 0.4 * side, 8);
   NewtonOptions newton;
   newton.tolerance = 1e-10;
   auto run = [&](int krylov, int& factorisations) {

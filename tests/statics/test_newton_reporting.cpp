@@ -24,14 +24,6 @@ Dirichlet compressed(const StaticProblem& problem, Real travel) {
   }
   return dirichlet;
 }
-
-// The same cube's platen moved 30 % of its height in `increments` steps.
-PlatenLoading compression_path(const StaticProblem& problem, int increments) {
-  PlatenLoading loading = test::clamped_platens(problem, 4);
-  loading.travel = 0.3 * 4e-3;
-  loading.increments = increments;
-  return loading;
-}
 }  // namespace
 
 TEST_CASE("Newton tells every step it takes, as its report records them", "[statics]") {
@@ -74,7 +66,7 @@ TEST_CASE("A stop asked between Newton steps ends the solve unconverged, not fai
 
 TEST_CASE("A stop asked during a path ends it at the last converged increment", "[statics]") {
   StaticProblem problem = test::neo_hookean_cube(1e-3);
-  const PlatenLoading loading = compression_path(problem, 10);
+  const PlatenLoading loading = test::clamped_platens(problem, 4, 0.3 * 4e-3, 10);
   SparseSolver solver(LinearSolverKind::cholmod);
   int increments_seen = 0;
   NewtonOptions options;
@@ -94,7 +86,7 @@ TEST_CASE("A stop asked during a path ends it at the last converged increment", 
 
 TEST_CASE("A stop asked inside an increment's Newton solve ends the path at the increment before", "[statics]") {
   StaticProblem problem = test::neo_hookean_cube(1e-3);
-  const PlatenLoading loading = compression_path(problem, 4);
+  const PlatenLoading loading = test::clamped_platens(problem, 4, 0.3 * 4e-3, 4);
   // First the whole path, for the number of Newton steps of the first increment.
   SparseSolver whole_solver(LinearSolverKind::cholmod);
   const PathReport whole = load_by_platen(problem, loading, whole_solver);
