@@ -9,8 +9,10 @@
 #   QUICK=1: 2x2x2 cells, 5 mm of travel (24 %) and back. Paper size: 5x5x5 cells, 12 mm (24 %)
 #   and back (cost measured in docs/paper-b.md).
 # Results in results/metal-lattice/{paper,quick}/: residual.md (residual.py: the residual
-# deformation, the travel where the platen's force returns to zero on unloading, against the
-# elastic run; energies; cost), summary.md (latmpm-post: load against travel, the unloading
+# deformation, the lattice's own height change at the end (its top layer against its bottom
+# layer, from the first and last snapshots), against the elastic run, which must come back
+# within 2 % of the travel; the platen's travel where its force returns to zero on unloading;
+# energies; cost), summary.md (latmpm-post: load against travel, the unloading
 # branch included; the runs' cost), energy.png (work in, plastic work, elastic energy against
 # time), run-<case>/ (the solver's runs).
 # Chain: latmpm-lattice --preset T2P30 --no-plates -> latmpm-voxelize -> latmpm-solve
@@ -53,7 +55,7 @@ $(ML_OUT)/energy.png: $(ML_OUT)/run-$(ML_FIRST)/done $(ML_SRC)/plot_energy.gp
 
 # The residual deformation of every run, against the elastic run's recovery.
 ML_LABEL_RUNS := $(call pipeline_label_runs,$(ML_OUT),$(ML_SELECTED))
-$(ML_OUT)/residual.md: $(foreach r,$(ML_LABEL_RUNS),$(lastword $(subst =, ,$r))/done) $(ML_SRC)/residual.py
+$(ML_OUT)/residual.md: $(foreach r,$(ML_LABEL_RUNS),$(lastword $(subst =, ,$r))/done) $(ML_SRC)/residual.py $(ML_SRC)/lattice_height.py
 	python3 $(ML_SRC)/residual.py --height $(ML_HEIGHT) --out $(ML_OUT) \
 	  $(if $(filter T2P30-elastic-mu0=%,$(ML_LABEL_RUNS)),--must-recover T2P30-elastic-mu0 --) $(ML_LABEL_RUNS)
 

@@ -10,28 +10,15 @@
       top and bottom, and the height change (top - bottom): the lattice's own recovery,
       whether or not the platen still touches it.
 
-Standard library only; reads the snapshots with h5dump (hdf5-tools, scripts/install-deps.sh)."""
+Standard library only; reads the snapshots with h5dump (hdf5-tools, scripts/install-deps.sh)
+through pipelines/metal-lattice/lattice_height.py (the recovery check's measure, residual.py)."""
 import argparse
-import glob
 import math
 import os
-import subprocess
 import sys
-import tempfile
 
-
-def dataset(path, name, width):
-    with tempfile.NamedTemporaryFile("r", suffix=".txt") as out:
-        subprocess.run(["h5dump", "-d", name, "-y", "-w", "0", "-o", out.name, path], check=True,
-                       capture_output=True)
-        values = [float(t) for t in out.read().replace(",", " ").split()]
-    return [tuple(values[i:i + width]) for i in range(0, len(values), width)] if width > 1 else values
-
-
-def snapshot_time(path):
-    text = subprocess.run(["h5dump", "-a", "/particles/time", path], capture_output=True, text=True).stdout
-    line = next((l for l in text.splitlines() if "(0)" in l), "")
-    return float(line.split(":")[-1]) if line else float("nan")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "pipelines", "metal-lattice"))
+from lattice_height import dataset, height_change, layers, snapshot_time, snapshots  # noqa: E402
 
 
 def close_pairs(x, near):
@@ -59,14 +46,12 @@ def main():
     p.add_argument("--far", type=float, default=2.5, help="mm")
     p.add_argument("--snapshots", default="", help="indices into the sorted snapshots (default: all)")
     a = p.parse_args()
-    snaps = sorted(glob.glob(os.path.join(a.run, "snapshots", "snap_*.h5")))
+    snaps = snapshots(a.run)
     if not snaps:
         sys.exit(f"lattice_snapshots.py: {a.run}/snapshots: no snap_*.h5")
     chosen = [snaps[int(k)] for k in a.snapshots.split(",")] if a.snapshots else snaps
     x0 = dataset(snaps[0], "/particles/position", 3)
-    z0 = [p[2] for p in x0]
-    top = [i for i, z in enumerate(z0) if z > max(z0) - 1e-3]
-    bottom = [i for i, z in enumerate(z0) if z < min(z0) + 1e-3]
+    top, bottom = layers(x0)
     for s in chosen:
         x = dataset(s, "/particles/position", 3)
         t = snapshot_time(s) * 1e6
@@ -78,10 +63,9 @@ def main():
             print(f"{os.path.basename(s)} t = {t:.1f} us: {len(new)} pairs closer than {a.near} mm that started "
                   f"farther than {a.far} mm apart ({len(points)} points)")
         else:
-            up = sum(x[i][2] - x0[i][2] for i in top) / len(top) * 1e3
-            down = sum(x[i][2] - x0[i][2] for i in bottom) / len(bottom) * 1e3
+            up, down, change = (v * 1e3 for v in height_change(x0, x, top, bottom))
             print(f"{os.path.basename(s)} t = {t:.1f} us: top ({len(top)} points) {up:+.3f} mm, bottom "
-                  f"({len(bottom)}) {down:+.3f} mm, height change {up - down:+.3f} mm")
+                  f"({len(bottom)}) {down:+.3f} mm, height change {change:+.3f} mm")
 
 
 if __name__ == "__main__":
