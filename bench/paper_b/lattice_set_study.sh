@@ -7,7 +7,7 @@
 # end (the lattice unloaded and free), the kinetic energy at the end, the lattice's height
 # change (lattice_height.py) and what of the points' strain their positions show
 # (strain_compatibility.py, interior points).
-#   usage: lattice_set_study.sh BIN_DIR OUT_DIR     (~2 min of CPU; writes OUT_DIR/table.md)
+#   usage: lattice_set_study.sh BIN_DIR OUT_DIR     (~3 min of CPU; writes OUT_DIR/table.md)
 set -euo pipefail
 bin=${1:?usage: lattice_set_study.sh BIN_DIR OUT_DIR}
 out=${2:?usage: lattice_set_study.sh BIN_DIR OUT_DIR}
@@ -16,7 +16,7 @@ repo=$(cd "$here/../.." && pwd)
 mkdir -p "$out"
 "$bin/latmpm-lattice" --preset T2P30 --cells 1x1x1 --no-plates --quiet -o "$out/cell.h5"
 for ppc in 2 3 4; do
-  "$bin/latmpm-voxelize" "$out/cell.h5" --cell 1mm --ppc $ppc --quiet -o "$out/points-ppc$ppc.h5"
+  "$bin/latmpm-voxelize" "$out/cell.h5" --cell 1mm --ppc $ppc --quiet -o "$out/points-$ppc.h5"
 done
 "$bin/latmpm-voxelize" "$out/cell.h5" --cell 0.5mm --ppc 2 --quiet -o "$out/points-h0.5.h5"
 
@@ -66,9 +66,9 @@ for row in "${rows[@]}"; do
   run="$out/run-$n"
   sets=()
   for s in "${cell[@]}" $overrides; do sets+=(--set "$s"); done
-  spacing=$(python3 -c "print(0.25 if '$points' == 'h0.5' else 1 / $points)")
+  case $points in h0.5) spacing=0.25 ;; *) spacing=$(python3 -c "print(1 / $points)") ;; esac
   /usr/bin/time -f %U -o "$run.cpu" "$bin/latmpm-solve" "$repo/pipelines/metal-lattice/ti-lattice.toml" \
-    --set points.0.file="$out/points-ppc$points.h5" "${sets[@]}" -o "$run" --quiet 2> "$run.log" \
+    --set points.0.file="$out/points-$points.h5" "${sets[@]}" -o "$run" --quiet 2> "$run.log" \
     || { echo "| $label | failed: $(tail -1 "$run.log") |" >> "$out/table.md"; continue; }
   energies=$(python3 - "$run/series.csv" <<'PY'
 import csv, sys
