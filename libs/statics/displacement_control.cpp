@@ -1,6 +1,7 @@
 #include "statics/displacement_control.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <tuple>
 #include <utility>
@@ -158,22 +159,33 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
 
   const Real base_step = loading.travel / loading.increments;
   const Real max_step = base_step * std::max(Real(1), loading.max_step_growth);
+  // A Newton failure says only that this step was too long for Newton from the last
+  // equilibrium, not that no equilibrium lies beyond it: the step is halved and tried again
+  // from there, and only a failure at the smallest step (the increment over 2^bisections)
+  // ends the path. (Until 2026-11-26 the failing travel stayed the bracket's upper end while
+  // its lower end was bisected towards it; on the paper-size T1P20 and T1P30 every bisection
+  // converged, so the reported end was only where one long step had failed.)
+  const Real min_step = std::ldexp(base_step, -loading.bisections);
   const Real end_tolerance = 1e-9 * loading.travel;
   Real step = base_step;
-  int increment = 0;
   while (stable_travel < loading.travel - end_tolerance) {
     if (newton.stop_requested && newton.stop_requested()) return end_stopped();
-    ++increment;
-    const Real target = loading.travel - stable_travel < step + end_tolerance
-                            ? loading.travel
-                            : (max_step > base_step ? stable_travel + step : increment * base_step);
+    Real target = loading.travel;
+    if (loading.travel - stable_travel >= step + end_tolerance) {
+      target = stable_travel + step;
+      if (max_step <= base_step) {
+        // Fixed increments: the travels k × base_step, a cut step never passing the next one.
+        const Real next_grid = (std::floor(stable_travel / base_step + Real(1e-6)) + 1) * base_step;
+        if (target > next_grid - end_tolerance) target = next_grid;
+      }
+    }
     PathPoint point;
     std::string failure;
     Vector next = u;
     const bool converged = solve_at(target, next, point, failure);
     if (stopped) return end_stopped();
-    if (!converged && step > base_step * (1 + 1e-9)) {  // too large a step: halve it, retry
-      step = std::max(base_step, Real(0.5) * step);
+    if (!converged && step > min_step * (1 + 1e-9)) {  // too long a step: halve it, retry
+      step *= Real(0.5);
       ++report.cut_backs;
       continue;
     }
@@ -190,8 +202,18 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (point.newton_iterations <= loading.fast_newton)
         step = std::min(max_step, step * loading.step_growth);
       else if (point.newton_iterations > 2 * loading.fast_newton)
-        step = std::max(base_step, step / loading.step_growth);
+        step = std::max(std::min(step, base_step), step / loading.step_growth);
       continue;
+    }
+    if (!converged) {  // a Newton failure at the smallest step: the end's bracket is that step
+      report.ended = true;
+      report.end_reason = failure;
+      report.last_stable_travel = stable_travel;
+      for (const PathPoint& p : report.points)
+        if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+      report.end_travel = Real(0.5) * (stable_travel + target);
+      report.end_load = report.last_stable_load;
+      return report;
     }
     report.ended = true;
     report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
