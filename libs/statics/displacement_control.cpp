@@ -150,14 +150,19 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     return true;
   };
 
-  auto end_stopped = [&] {
-    report.ended = true;
-    report.stopped = true;
-    report.end_reason = "stopped";
+  // The report's last stable travel and its load (0 at the start).
+  auto record_last_stable = [&] {
     report.last_stable_travel = stable_travel;
     report.last_stable_load = 0;
     for (const PathPoint& p : report.points)
       if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  };
+
+  auto end_stopped = [&] {
+    report.ended = true;
+    report.stopped = true;
+    report.end_reason = "stopped";
+    record_last_stable();
     report.end_travel = stable_travel;
     report.end_load = report.last_stable_load;
     return report;
@@ -215,15 +220,13 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     if (!converged) {  // a Newton failure at the smallest step: the end's bracket is that step
       report.ended = true;
       report.end_reason = failure;
-      report.last_stable_travel = stable_travel;
-      for (const PathPoint& p : report.points)
-        if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+      record_last_stable();
       report.end_travel = Real(0.5) * (stable_travel + target);
       report.end_load = report.last_stable_load;
       return report;
     }
     report.ended = true;
-    report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
+    report.end_reason = past_peak ? "load maximum" : "tangent not positive definite";
     if (past_peak) {
       // The peak lies between the last two stable loads' travel and this one: the vertex of
       // the parabola through the last three points (the start counts as (0, 0)). Bisection
@@ -239,9 +242,10 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (observe) observe(point, next);
       return report;
     }
-    // Bracket the end of the static path between the last stable travel and this one.
+    // An indefinite tangent: bracket the travel where it turns between the last stable travel
+    // and this one (a bisection travel that does not converge counts as past it).
     Real low = stable_travel, high = target;
-    bool high_converged = converged;
+    bool high_converged = true;
     Real high_load = point.load;
     for (int b = 0; b < loading.bisections; ++b) {
       const Real mid = Real(0.5) * (low + high);
@@ -264,22 +268,16 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
         high_load = trial_point.load;
       }
     }
-    if (converged) {  // the first unstable equilibrium closes the path
-      report.points.push_back(point);
-      if (observe) observe(point, next);
-    }
+    report.points.push_back(point);  // the first unstable equilibrium closes the path
+    if (observe) observe(point, next);
     stable_travel = low;
-    for (const PathPoint& p : report.points)
-      if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
-    report.last_stable_travel = stable_travel;
+    record_last_stable();
     // Midpoint of the final bracket, the load interpolated where both ends converged.
     report.end_travel = Real(0.5) * (low + high);
     report.end_load = high_converged ? Real(0.5) * (report.last_stable_load + high_load) : report.last_stable_load;
     return report;
   }
-  report.last_stable_travel = stable_travel;
-  for (const PathPoint& p : report.points)
-    if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  record_last_stable();
   report.end_load = report.last_stable_load;
   return report;
 }
