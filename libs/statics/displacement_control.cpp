@@ -1,6 +1,7 @@
 #include "statics/displacement_control.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <tuple>
 #include <utility>
@@ -69,8 +70,10 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
   // Solves at `travel` from u; true when it converged (u, point updated), false otherwise
   // (`stopped` set where a stop request ended a solve). With the predictor, Newton starts from
   // the secant extrapolation of the last two equilibria (its prescribed unknowns exact); where
-  // that inverts a point or does not converge, from u itself, as without it.
-  auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure) {
+  // that inverts a point or does not converge, from u itself, as without it. `retry` false:
+  // a step that will be halved if it fails gets the first attempt only (on the paper-size T2
+  // paths each attempt that fails costs 20 steps of ~25 s; the halved step is the better retry).
+  auto solve_at = [&](Real travel, Vector& state, PathPoint& point, std::string& failure, bool retry) {
     const Dirichlet conditions = platen_conditions(problem, loading, travel);
     Vector trial = state;
     NewtonReport r;
@@ -95,12 +98,16 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (predicted && !solve(newton)) return false;
     }
     point.predicted = predicted && r.converged;
+    if (predicted && !r.converged && !retry) {
+      failure = r.failure;
+      return false;
+    }
     if (!point.predicted) {
       abandon();  // an abandoned prediction (or none: zeros)
       trial = state;
       if (!solve(newton)) return false;
     }
-    if (!r.converged && r.krylov_steps + spent_krylov > 0) {
+    if (!r.converged && retry && r.krylov_steps + spent_krylov > 0) {
       // Krylov steps take other (inexact) directions: where a solve that took any fails, the
       // increment is solved again by factorising Newton, so that they never end a path it
       // would continue. A solve that took none already was factorising Newton.
@@ -143,14 +150,19 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
     return true;
   };
 
-  auto end_stopped = [&] {
-    report.ended = true;
-    report.stopped = true;
-    report.end_reason = "stopped";
+  // The report's last stable travel and its load (0 at the start).
+  auto record_last_stable = [&] {
     report.last_stable_travel = stable_travel;
     report.last_stable_load = 0;
     for (const PathPoint& p : report.points)
       if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  };
+
+  auto end_stopped = [&] {
+    report.ended = true;
+    report.stopped = true;
+    report.end_reason = "stopped";
+    record_last_stable();
     report.end_travel = stable_travel;
     report.end_load = report.last_stable_load;
     return report;
@@ -158,22 +170,34 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
 
   const Real base_step = loading.travel / loading.increments;
   const Real max_step = base_step * std::max(Real(1), loading.max_step_growth);
+  // A Newton failure says only that this step was too long for Newton from the last
+  // equilibrium, not that no equilibrium lies beyond it: the step is halved and tried again
+  // from there, and only a failure at the smallest step (the increment over 2^bisections)
+  // ends the path. (Until 2026-11-26 the failing travel stayed the bracket's upper end while
+  // its lower end was bisected towards it; on the paper-size T1P20 and T1P30 every bisection
+  // converged, so the reported end was only where one long step had failed.)
+  const Real min_step = std::ldexp(base_step, -loading.bisections);
   const Real end_tolerance = 1e-9 * loading.travel;
   Real step = base_step;
-  int increment = 0;
   while (stable_travel < loading.travel - end_tolerance) {
     if (newton.stop_requested && newton.stop_requested()) return end_stopped();
-    ++increment;
-    const Real target = loading.travel - stable_travel < step + end_tolerance
-                            ? loading.travel
-                            : (max_step > base_step ? stable_travel + step : increment * base_step);
+    Real target = loading.travel;
+    if (loading.travel - stable_travel >= step + end_tolerance) {
+      target = stable_travel + step;
+      if (max_step <= base_step) {
+        // Fixed increments: the travels k × base_step, a cut step never passing the next one.
+        const Real next_grid = (std::floor(stable_travel / base_step + Real(1e-6)) + 1) * base_step;
+        if (target > next_grid - end_tolerance) target = next_grid;
+      }
+    }
     PathPoint point;
     std::string failure;
     Vector next = u;
-    const bool converged = solve_at(target, next, point, failure);
+    const bool can_cut_back = step > min_step * (1 + 1e-9);
+    const bool converged = solve_at(target, next, point, failure, !can_cut_back);
     if (stopped) return end_stopped();
-    if (!converged && step > base_step * (1 + 1e-9)) {  // too large a step: halve it, retry
-      step = std::max(base_step, Real(0.5) * step);
+    if (!converged && can_cut_back) {  // too long a step: halve it, retry
+      step *= Real(0.5);
       ++report.cut_backs;
       continue;
     }
@@ -190,11 +214,19 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (point.newton_iterations <= loading.fast_newton)
         step = std::min(max_step, step * loading.step_growth);
       else if (point.newton_iterations > 2 * loading.fast_newton)
-        step = std::max(base_step, step / loading.step_growth);
+        step = std::max(std::min(step, base_step), step / loading.step_growth);
       continue;
     }
+    if (!converged) {  // a Newton failure at the smallest step: the end's bracket is that step
+      report.ended = true;
+      report.end_reason = failure;
+      record_last_stable();
+      report.end_travel = Real(0.5) * (stable_travel + target);
+      report.end_load = report.last_stable_load;
+      return report;
+    }
     report.ended = true;
-    report.end_reason = past_peak ? "load maximum" : converged ? "tangent not positive definite" : failure;
+    report.end_reason = past_peak ? "load maximum" : "tangent not positive definite";
     if (past_peak) {
       // The peak lies between the last two stable loads' travel and this one: the vertex of
       // the parabola through the last three points (the start counts as (0, 0)). Bisection
@@ -210,16 +242,17 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (observe) observe(point, next);
       return report;
     }
-    // Bracket the end of the static path between the last stable travel and this one.
+    // An indefinite tangent: bracket the travel where it turns between the last stable travel
+    // and this one (a bisection travel that does not converge counts as past it).
     Real low = stable_travel, high = target;
-    bool high_converged = converged;
+    bool high_converged = true;
     Real high_load = point.load;
     for (int b = 0; b < loading.bisections; ++b) {
       const Real mid = Real(0.5) * (low + high);
       PathPoint trial_point;
       std::string trial_failure;
       Vector trial = u;
-      const bool trial_converged = solve_at(mid, trial, trial_point, trial_failure);
+      const bool trial_converged = solve_at(mid, trial, trial_point, trial_failure, true);
       if (stopped) return end_stopped();
       if (trial_converged && loading.end_at_load_maximum && !report.points.empty() &&
           trial_point.load < report.points.back().load)
@@ -235,22 +268,16 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
         high_load = trial_point.load;
       }
     }
-    if (converged) {  // the first unstable equilibrium closes the path
-      report.points.push_back(point);
-      if (observe) observe(point, next);
-    }
+    report.points.push_back(point);  // the first unstable equilibrium closes the path
+    if (observe) observe(point, next);
     stable_travel = low;
-    for (const PathPoint& p : report.points)
-      if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
-    report.last_stable_travel = stable_travel;
+    record_last_stable();
     // Midpoint of the final bracket, the load interpolated where both ends converged.
     report.end_travel = Real(0.5) * (low + high);
     report.end_load = high_converged ? Real(0.5) * (report.last_stable_load + high_load) : report.last_stable_load;
     return report;
   }
-  report.last_stable_travel = stable_travel;
-  for (const PathPoint& p : report.points)
-    if (p.stable && p.travel == stable_travel) report.last_stable_load = p.load;
+  record_last_stable();
   report.end_load = report.last_stable_load;
   return report;
 }

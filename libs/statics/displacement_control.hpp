@@ -6,8 +6,10 @@
 // (unprojected) tangent is factorised: the static path ends at the first increment where it
 // is not positive definite (a bifurcation or limit point: buckling), where the load falls
 // (past a limit point; the only check where the true tangent is unusable, docs/statics.md)
-// or where Newton fails; the travel there is bracketed by bisection (a load maximum: located
-// by the parabola through the last three loads). The check factorises with the Newton solver
+// or where Newton fails at the smallest step. An indefinite tangent's travel is bracketed by
+// bisection, a load maximum located by the parabola through the last three loads; a Newton
+// failure halves the step and tries again from the last equilibrium, down to the increment
+// over 2^bisections, so that the path ends only where no short step converges. The check factorises with the Newton solver
 // itself when that is direct (one analysis, one factor in memory: the next Newton step
 // refactorises anyway), else with its own CHOLMOD; where Newton's last step was a
 // true-tangent step of a direct solver taken at a relative residual ≤ 1e-4, that
@@ -31,15 +33,15 @@ struct PlatenLoading {
   int increments = 10;
   bool check_stability = true;        // factorise the true tangent after each increment
   bool end_at_load_maximum = true;    // a falling load also ends the path (a limit point)
-  int bisections = 6;                 // halvings of the bracket around the instability
+  int bisections = 6;                 // halvings of the indefinite tangent's bracket, and of the
+                                      // step after a Newton failure before the path ends
   // Start each increment's Newton from the secant extrapolation of the last two equilibria
   // (from the last one where that inverts a point or does not converge).
   bool predictor = true;
   // Adaptive increments: the step starts at travel / increments and grows by `step_growth`
   // after each increment whose Newton took at most `fast_newton` steps, up to
-  // max_step_growth × that, and shrinks by it after one that took more than twice that;
-  // a Newton failure at a larger step halves it and retries before the path is declared
-  // ended. 1: fixed increments.
+  // max_step_growth × that, and shrinks by it after one that took more than twice that
+  // (1: fixed increments). After a Newton failure's halvings the step grows back the same way.
   Real max_step_growth = 1;
   Real step_growth = 2;
   int fast_newton = 4;
@@ -67,11 +69,12 @@ struct PathReport {
   std::string end_reason;         // "tangent not positive definite", "load maximum", "stopped"
                                   // (NewtonOptions::stop_requested), or Newton's failure
   bool stopped = false;           // a stop request ended it: end_travel is the last stable travel
-  Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable);
+  Real end_travel = 0;            // m: middle of the final bracket (last stable, first unstable
+                                  // or failed at the smallest step);
                                   // a load maximum: the vertex of the parabola through the last
                                   // three loads (no bisection: the top is flat)
   Real end_load = 0;              // N: the load there (interpolated), or the last stable load
-  int cut_backs = 0;              // increments halved after a Newton failure (adaptive steps)
+  int cut_backs = 0;              // steps halved after a Newton failure
   int checks_from_newton = 0;     // stability checks answered by Newton's last factorisation
   Real last_stable_travel = 0;    // m: the last travel found stable
   Real last_stable_load = 0;      // N: the load there

@@ -61,3 +61,45 @@ TEST_CASE("Adaptive increments follow the fixed-increment path in fewer incremen
   // positive definite true tangent of Newton's last step.
   CHECK(fixed.checks_from_newton > 0);
 }
+
+TEST_CASE("A Newton failure halves the step and the path goes on; only the smallest step's failure ends it", "[statics]") {
+  // The cube compressed 40 % in two increments, Newton allowed 4 steps: a 20 % step from the
+  // last equilibrium cannot converge in 4, shorter ones can. The path must reach the full
+  // travel through the halved steps, and its equilibria must be the fixed 16-increment
+  // path's (the same tolerance at the same travels: the path does not depend on the steps).
+  const Real h = 1e-3, side = 4 * h;
+  StaticProblem problem = test::neo_hookean_cube(h);
+  NewtonOptions newton;
+  newton.tolerance = 1e-10;
+  SparseSolver solver(LinearSolverKind::cholmod);
+  const PathReport reference = load_by_platen(problem, test::clamped_platens(problem, 4, 0.4 * side, 16), solver, newton);
+  REQUIRE_FALSE(reference.ended);
+  newton.max_iterations = 4;
+  PlatenLoading loading = test::clamped_platens(problem, 4, 0.4 * side, 2);
+  loading.bisections = 4;  // steps down to 40 % / 2 / 16 = 1.25 %
+  const PathReport cut = load_by_platen(problem, loading, solver, newton);
+  CAPTURE(cut.end_reason, cut.end_travel, cut.cut_backs);
+  REQUIRE_FALSE(cut.ended);
+  CHECK(cut.cut_backs > 0);
+  CHECK(cut.points.back().travel == Approx(loading.travel).epsilon(1e-12));
+  const Real fine = loading.travel / 16;
+  int compared = 0;
+  for (const PathPoint& p : cut.points) {
+    const long k = std::lround(p.travel / fine);  // halvings of the increment: multiples of 1/16
+    REQUIRE(std::abs(p.travel - k * fine) < 1e-9 * fine);
+    CHECK(p.newton_iterations <= 3 * newton.max_iterations);  // predictor, restart, factorising
+    CHECK(p.load == Approx(reference.points[size_t(k - 1)].load).epsilon(1e-7));
+    ++compared;
+  }
+  CHECK(compared == int(cut.points.size()));
+
+  // Newton allowed one step only converges nowhere (the platen's step needs equilibrium
+  // iterations): the path ends after `bisections` halvings, bracketing the start.
+  newton.max_iterations = 1;
+  const PathReport none = load_by_platen(problem, loading, solver, newton);
+  REQUIRE(none.ended);
+  CHECK(none.points.empty());
+  CHECK(none.cut_backs == loading.bisections);
+  CHECK(none.end_travel == Approx(0.5 * std::ldexp(loading.travel / 2, -loading.bisections)).epsilon(1e-12));
+  CHECK(none.end_load == 0);
+}
