@@ -178,6 +178,8 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
   // converged, so the reported end was only where one long step had failed.)
   const Real min_step = std::ldexp(base_step, -loading.bisections);
   const Real end_tolerance = 1e-9 * loading.travel;
+  // In increments: below a quarter of the smallest step, above rounding.
+  const Real grid_tolerance = std::max(Real(1e-9), Real(0.25) * min_step / base_step);
   Real step = base_step;
   while (stable_travel < loading.travel - end_tolerance) {
     if (newton.stop_requested && newton.stop_requested()) return end_stopped();
@@ -186,18 +188,18 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       target = stable_travel + step;
       if (max_step <= base_step) {
         // Fixed increments: the travels k × base_step, a cut step never passing the next one.
-        const Real next_grid = (std::floor(stable_travel / base_step + Real(1e-6)) + 1) * base_step;
+        const Real next_grid = (std::floor(stable_travel / base_step + grid_tolerance) + 1) * base_step;
         if (target > next_grid - end_tolerance) target = next_grid;
       }
     }
     PathPoint point;
     std::string failure;
     Vector next = u;
-    const bool can_cut_back = step > min_step * (1 + 1e-9);
+    const bool can_cut_back = target - stable_travel > min_step * (1 + 1e-9);
     const bool converged = solve_at(target, next, point, failure, !can_cut_back);
     if (stopped) return end_stopped();
-    if (!converged && can_cut_back) {  // too long a step: halve it, retry
-      step *= Real(0.5);
+    if (!converged && can_cut_back) {  // too long a step: halve the one taken (it may have
+      step = Real(0.5) * (target - stable_travel);  // been clipped to a grid travel), retry
       ++report.cut_backs;
       continue;
     }
