@@ -171,7 +171,7 @@ void read(TableReader& solver, statics::StaticSettings& s) {
     solver.fail("newton_iterations", "must lie in [1, 10000] (Newton steps of an increment)");
   s.newton_iterations = int(newton_iterations);
   const long bisections = solver.integer("bisections", s.bisections);
-  if (bisections < 0 || bisections > 60) solver.fail("bisections", "must lie in [0, 60] (halvings of the end's bracket)");
+  if (bisections < 0 || bisections > 60) solver.fail("bisections", "must lie in [0, 60] (halvings of the step after a Newton failure)");
   s.bisections = int(bisections);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");

@@ -35,10 +35,11 @@ struct StaticSettings {
   // 20: on the paper-size lattice a CG iteration costs ~1/30 of a factorisation (docs/statics.md).
   int krylov_iterations = 20;
   Real stabilisation = 0.1;  // β of the affine stabilisation, × shear modulus (affine_stabilisation.hpp)
-  // Newton steps before an increment counts as not converged, and halvings of the travel
-  // bracket where the path ends (NewtonOptions::max_iterations, PlatenLoading::bisections).
-  // On a paper-size lattice a Newton step is ~10 s of CPU: an increment that does not
-  // converge costs up to three solves of this many steps (docs/statics.md).
+  // Newton steps before an increment counts as not converged, and halvings of the step
+  // after a Newton failure (and of an indefinite tangent's bracket) before the path ends
+  // (NewtonOptions::max_iterations, PlatenLoading::bisections). On a paper-size lattice a
+  // Newton step is 10-25 s of CPU: a failed step costs one solve of this many steps, the
+  // smallest step up to three (docs/statics.md).
   int newton_iterations = 50;
   int bisections = 6;
 };
