@@ -78,10 +78,14 @@ end = rows[-1]
 print(f"{max(se):.2f}, {se[-1]:.3f} | {se[-1] / max(se):.1%} | {float(end['kinetic_energy[J]']):.4f}")
 PY
 )
-  height=$(python3 -c "
-import sys; sys.path.insert(0, '$repo/pipelines/metal-lattice')
+  height=$(python3 - "$repo/pipelines/metal-lattice" "$run" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
 from lattice_height import final_height_change
-print(f\"{final_height_change('$run')['change_m'] * 1e3:+.3f}\")")
+h = final_height_change(sys.argv[2])
+print("—" if h is None else f"{h['change_m'] * 1e3:+.3f}")
+PY
+)
   compat=$(python3 "$here/strain_compatibility.py" "$run" --spacing "$spacing" | python3 -c "
 import re, sys
 t = sys.stdin.read()

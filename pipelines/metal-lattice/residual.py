@@ -20,6 +20,7 @@ import argparse
 import csv
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
@@ -52,7 +53,7 @@ def analyse(run):
     if height is None:
         raise ValueError("fewer than two snapshots: no lattice height")
     # The height is the end's: the solver writes a snapshot at the last step (docs/scene.md).
-    if abs(height["time_s"] - col(end, "time[s]")) > 2 * col(end, "dt[s]"):
+    if not abs(height["time_s"] - col(end, "time[s]")) <= 2 * col(end, "dt[s]"):  # NaN: unreadable time
         raise ValueError(f"the last snapshot (t = {height['time_s'] * 1e6:.1f} us) is not the series' end")
     # A run still going (no status.toml yet) is read as far as its series goes.
     s = read_status(run) if os.path.exists(os.path.join(run, "status.toml")) else {"status": "running"}
@@ -102,7 +103,7 @@ def main():
             sys.exit(f"residual.py: {item}: expected LABEL=RUN_DIR")
         try:
             results.append((label, analyse(run)))
-        except (OSError, KeyError, ValueError) as e:
+        except (OSError, KeyError, ValueError, IndexError, ZeroDivisionError, subprocess.SubprocessError) as e:
             sys.exit(f"residual.py: {run}: {e}")
     os.makedirs(a.out, exist_ok=True)
     keys = list(results[0][1].keys())
