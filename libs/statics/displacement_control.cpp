@@ -98,11 +98,8 @@ PathReport load_by_platen(StaticProblem& problem, const PlatenLoading& loading, 
       if (predicted && !solve(newton)) return false;
     }
     point.predicted = predicted && r.converged;
-    if (predicted && !r.converged && !retry) {
-      failure = r.failure;
-      return false;
-    }
-    if (!point.predicted) {
+    // A failed prediction is solved again from u only where the step will not be halved instead.
+    if (!point.predicted && (retry || !predicted)) {
       abandon();  // an abandoned prediction (or none: zeros)
       trial = state;
       if (!solve(newton)) return false;

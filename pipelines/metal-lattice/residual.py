@@ -29,8 +29,6 @@ from run_status import read_status  # noqa: E402
 from lattice_height import final_height_change  # noqa: E402
 
 
-
-
 def joules(value):
     """A table's energy: three decimals, or a dash for a column the run's series lacks."""
     return "—" if math.isnan(value) else f"{value:.3f}"
