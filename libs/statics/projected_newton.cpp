@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/errors.hpp"
@@ -32,8 +33,29 @@ Real step_bound(const StaticProblem& problem, const Vector& u, const Vector& d, 
   for (Mat3& m : D) m -= Mat3::Identity();
   return std::min(Real(1), inversion_free_step(F, D, margin));
 }
+
 }  // namespace
 
+std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
+                                     const NewtonOptions& options) {
+  const int window = options.stall_window;
+  const int steps = int(projected_at_rest.size());
+  if (window <= 0 || steps < window) return {};
+  for (int i = steps - window; i < steps; ++i) {
+    const Real ratio = residual[size_t(i) + 1] / residual[size_t(i)];
+    if (!projected_at_rest[size_t(i)] || !(ratio >= options.stall_ratio && ratio < 1)) return {};
+  }
+  const Real now = residual.back();
+  const Real rate = std::pow(now / residual[size_t(steps - window)], Real(1) / Real(window));
+  const Real needed = std::ceil(std::log(options.tolerance / now) / std::log(rate));
+  if (steps + needed <= options.max_iterations) return {};
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "converging linearly (relative residual %.3g, x%.2f a step over %d projected steps): "
+                "%.0f more steps to the tolerance, %d left",
+                now, rate, window, needed, options.max_iterations - steps);
+  return text;
+}
 NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichlet, Vector& u,
                                SparseSolver& solver, const NewtonOptions& options) {
   NewtonReport report;
@@ -43,6 +65,9 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
   // tried again once the residual has fallen by retry_true_tangent_after since then (the
   // struts' bending may leave it indefinite far from the solution, not near it).
   Real true_tangent_failed_at = std::numeric_limits<Real>::infinity();
+  // Per step taken: true when it was a projected step with the platen at rest (the kind of
+  // step whose steady linear convergence the stall rule looks for).
+  std::vector<char> projected_at_rest;
   for (int k = 0;; ++k) {
     const Vector f_int = problem.internal_force(u);
     const Vector g = f_int - f_ext;
@@ -65,6 +90,11 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     if (k == options.max_iterations) {
       report.failure = "no convergence in " + std::to_string(k) + " Newton steps (relative residual " +
                        std::to_string(residual) + ")";
+      break;
+    }
+    if (const std::string stall = linear_convergence_stall(report.residual, projected_at_rest, options);
+        !stall.empty()) {
+      report.failure = stall;
       break;
     }
 
@@ -174,6 +204,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     }
     u += alpha * d;
     report.step.push_back(alpha);
+    projected_at_rest.push_back(!boundary_moves && report.true_tangent_steps == true_steps_before);
     if (options.on_step) {
       NewtonStep s;
       s.iteration = report.iterations;
@@ -186,6 +217,7 @@ NewtonReport solve_equilibrium(StaticProblem& problem, const Dirichlet& dirichle
     }
   }
   report.min_jacobian = problem.min_jacobian(u);
+  if (!report.converged && !report.stopped && options.on_failure) options.on_failure(report.failure);
   return report;
 }
 

@@ -60,12 +60,25 @@ struct NewtonOptions {
   // convergence); only where that fails is the matrix factorised. 0: every step factorises.
   int krylov_iterations = 0;
   Real krylov_forcing = 1e-2;
+  // Stop on slow convergence: where the last `stall_window` steps were all projected (the
+  // true tangent indefinite or not tried) and each cut the residual by a factor in
+  // [stall_ratio, 1), convergence is linear, and where at that rate (their geometric mean)
+  // the tolerance lies beyond max_iterations the solve fails now instead of at the budget.
+  // Near a lattice's instability such a solve creeps towards a buckled state at 0.7–0.95 a
+  // step and never converges (docs/statics.md): each failed attempt there cost the whole
+  // budget, ~20 steps of ~25 s. Alternating true-tangent/projected steps, whose residual
+  // rises and falls, do not qualify: those solves do converge. 0: never stop early.
+  int stall_window = 4;
+  Real stall_ratio = 0.6;
   // Asked before each step: true stops the solve unconverged (NewtonReport::stopped), as a
   // signal stops a run between steps (core/interruption.hpp). Empty: never.
   std::function<bool()> stop_requested;
   // Told after each step: on a paper-size lattice one Newton step is ~10 s and an increment
   // that does not converge takes tens of minutes, so the run logs every step.
   std::function<void(const NewtonStep&)> on_step;
+  // Told where a solve ends unconverged (not where a stop request ended it), with why: the
+  // caller then halves the step or ends the path, and the log says which failure that was.
+  std::function<void(const std::string&)> on_failure;
 };
 
 struct NewtonReport {
@@ -84,6 +97,13 @@ struct NewtonReport {
   std::string failure;            // why it stopped without converging
   bool stopped = false;           // stop_requested() ended it (not a failure of the method)
 };
+
+// The stall rule of NewtonOptions::stall_window, applied before each step: empty where the
+// solve may go on, else why it stops. residual[i] is the relative residual before step i + 1
+// (the last entry the current one); projected_at_rest[i] says whether step i + 1 was a
+// projected step with the prescribed unknowns already in place.
+std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
+                                     const NewtonOptions& options);
 
 // u: the start on entry (prescribed unknowns may differ from their values), the result on
 // return. Never evaluates the energy of an F with det F ≤ 0.

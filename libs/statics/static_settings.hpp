@@ -42,6 +42,10 @@ struct StaticSettings {
   // smallest step up to three (docs/statics.md).
   int newton_iterations = 50;
   int bisections = 6;
+  // Projected steps of steady linear convergence after which a Newton solve that cannot reach
+  // the tolerance within newton_iterations at that rate counts as failed at once
+  // (NewtonOptions::stall_window; 0: only at the budget).
+  int stall_window = 4;
 };
 
 }  // namespace latmpm::statics

@@ -1,0 +1,131 @@
+// The stall rule (NewtonOptions::stall_window): a Newton solve whose projected steps converge
+// linearly, too slowly to reach the tolerance within its budget, stops at once; solves that
+// converge, or whose residual rises and falls between true-tangent and projected steps, are
+// left alone.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "point_blocks.hpp"
+#include "statics/projected_newton.hpp"
+
+using namespace latmpm;
+using namespace latmpm::statics;
+
+namespace {
+// A platen step (not at rest) from 1, then `steps` projected steps at rest from r0, each × rate.
+struct History {
+  std::vector<Real> residual{1};
+  std::vector<char> projected_at_rest{0};
+  History(Real r0, Real rate, int steps) {
+    residual.push_back(r0);
+    for (int i = 0; i < steps; ++i) {
+      residual.push_back(residual.back() * rate);
+      projected_at_rest.push_back(1);
+    }
+  }
+};
+
+// The 4 mm neo-Hookean cube (cell h) between clamped platens, the top moved down 40 %.
+Dirichlet compressed_40_percent(const StaticProblem& problem, Real h) {
+  Dirichlet dirichlet(problem.dof_count());
+  for (size_t n = 0; n < problem.band().node_count(); ++n) {
+    const int k = problem.band().node[n][2];
+    if (k <= 0) dirichlet.prescribe(n, Vec3::Zero());
+    if (k >= 4) dirichlet.prescribe(n, Vec3(0, 0, -0.4 * 4 * h));
+  }
+  return dirichlet;
+}
+
+NewtonOptions budget(int max_iterations) {
+  NewtonOptions options;
+  options.tolerance = 1e-8;
+  options.max_iterations = max_iterations;
+  return options;
+}
+}  // namespace
+
+TEST_CASE("Steady linear convergence that cannot reach the tolerance in the budget stops the solve",
+          "[statics]") {
+  // 1e-2 × 0.8 a step: after the platen step and 4 projected ones (5 steps taken), the
+  // tolerance 1e-8 is ceil(ln(1e-8 / (1e-2 · 0.8⁴)) / ln 0.8) = 58 steps away.
+  const History h(1e-2, 0.8, 4);
+  const Real now = 1e-2 * std::pow(0.8, 4);
+  const int needed = int(std::ceil(std::log(1e-8 / now) / std::log(0.8)));
+  REQUIRE(needed == 58);
+  const std::string stop = linear_convergence_stall(h.residual, h.projected_at_rest, budget(20));
+  CHECK_THAT(stop, Catch::Contains("converging linearly") && Catch::Contains("x0.80") &&
+                       Catch::Contains("58 more steps") && Catch::Contains("15 left"));
+  // The same history with a budget that holds those steps goes on; one step short stops.
+  CHECK(linear_convergence_stall(h.residual, h.projected_at_rest, budget(5 + needed)).empty());
+  CHECK_FALSE(linear_convergence_stall(h.residual, h.projected_at_rest, budget(5 + needed - 1)).empty());
+  // Too few steps at rest to judge, or the rule off.
+  const History short_history(1e-2, 0.8, 3);
+  CHECK(linear_convergence_stall(short_history.residual, short_history.projected_at_rest, budget(20)).empty());
+  NewtonOptions off = budget(20);
+  off.stall_window = 0;
+  CHECK(linear_convergence_stall(h.residual, h.projected_at_rest, off).empty());
+}
+
+TEST_CASE("Fast, rising or true-tangent steps are not a stall", "[statics]") {
+  // Faster than stall_ratio (0.6) a step: superlinear or near it, not the stall.
+  const History fast(1e-2, 0.5, 6);
+  CHECK(linear_convergence_stall(fast.residual, fast.projected_at_rest, budget(8)).empty());
+  // A rise inside the window (the alternation of true-tangent and projected steps of a
+  // converging increment, docs/statics.md): not steady.
+  History rising(1e-2, 0.8, 4);
+  rising.residual[3] *= 2;
+  CHECK(linear_convergence_stall(rising.residual, rising.projected_at_rest, budget(20)).empty());
+  // A true-tangent step inside the window.
+  History true_step(1e-2, 0.8, 4);
+  true_step.projected_at_rest[2] = 0;
+  CHECK(linear_convergence_stall(true_step.residual, true_step.projected_at_rest, budget(20)).empty());
+}
+
+TEST_CASE("A converging solve takes the same steps with the stall rule as without it", "[statics]") {
+  // The neo-Hookean cube compressed 40 % in one solve: converges, so the rule must not act.
+  const Real h = 1e-3;
+  for (const int max_iterations : {50, 12}) {
+    std::vector<Vector> results;
+    std::vector<int> iterations;
+    for (const int window : {4, 0}) {
+      StaticProblem problem = test::neo_hookean_cube(h);
+      const Dirichlet dirichlet = compressed_40_percent(problem, h);
+      Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
+      SparseSolver solver(LinearSolverKind::cholmod);
+      NewtonOptions options;
+      options.max_iterations = max_iterations;
+      options.stall_window = window;
+      const NewtonReport report = solve_equilibrium(problem, dirichlet, u, solver, options);
+      REQUIRE(report.converged);
+      results.push_back(u);
+      iterations.push_back(report.iterations);
+    }
+    CHECK(iterations[0] == iterations[1]);
+    CHECK((results[0] - results[1]).norm() == 0);
+  }
+}
+
+TEST_CASE("A solve that fails tells why once; a converged one never", "[statics]") {
+  const Real h = 1e-3;
+  for (const int max_iterations : {1, 50}) {
+    StaticProblem problem = test::neo_hookean_cube(h);
+    const Dirichlet dirichlet = compressed_40_percent(problem, h);
+    Vector u = Vector::Zero(Eigen::Index(problem.dof_count()));
+    SparseSolver solver(LinearSolverKind::cholmod);
+    NewtonOptions options;
+    options.max_iterations = max_iterations;
+    std::vector<std::string> told;
+    options.on_failure = [&](const std::string& why) { told.push_back(why); };
+    const NewtonReport report = solve_equilibrium(problem, dirichlet, u, solver, options);
+    if (report.converged) {
+      CHECK(told.empty());
+    } else {
+      REQUIRE(told.size() == 1);
+      CHECK(told[0] == report.failure);
+      CHECK_THAT(told[0], Catch::Contains("no convergence in 1 Newton steps"));
+    }
+    CHECK(report.converged == (max_iterations == 50));
+  }
+}
