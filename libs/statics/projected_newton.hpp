@@ -67,7 +67,10 @@ struct NewtonOptions {
   // Near a lattice's instability such a solve creeps towards a buckled state at 0.7–0.95 a
   // step and never converges (docs/statics.md): each failed attempt there cost the whole
   // budget, ~20 steps of ~25 s. Alternating true-tangent/projected steps, whose residual
-  // rises and falls, do not qualify: those solves do converge. 0: never stop early.
+  // rises and falls, do not qualify: those solves do converge. Before the rule fails a solve
+  // that is skipping an indefinite true tangent, the true tangent is tried once more. A
+  // second rule stops a solve whose residual has not set a new best for 2 × stall_window
+  // steps (no_progress_stall). 0: never stop early.
   int stall_window = 4;
   Real stall_ratio = 0.6;
   // Asked before each step: true stops the solve unconverged (NewtonReport::stopped), as a
@@ -104,6 +107,13 @@ struct NewtonReport {
 // projected step with the prescribed unknowns already in place.
 std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
                                      const NewtonOptions& options);
+
+// The second stall rule: empty where the solve may go on; else, where the relative residual
+// has not gone below its best since first_at_rest (the first residual with the prescribed
+// unknowns in place) for 2 × stall_window steps, why it stops. Converging solves whose
+// true-tangent and projected steps alternate set a new best every 2–3 steps (paper-size T2P40,
+// docs/statics.md); a true-tangent solve that bounces near a bifurcation does not.
+std::string no_progress_stall(const std::vector<Real>& residual, size_t first_at_rest, const NewtonOptions& options);
 
 // u: the start on entry (prescribed unknowns may differ from their values), the result on
 // return. Never evaluates the energy of an F with det F ≤ 0.

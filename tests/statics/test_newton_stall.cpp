@@ -129,3 +129,23 @@ TEST_CASE("A solve that fails tells why once; a converged one never", "[statics]
     CHECK(report.converged == (max_iterations == 50));
   }
 }
+
+TEST_CASE("A residual that sets no new best for twice the window stops the solve", "[statics]") {
+  // Before the platen step the last equilibrium's 1e-10 does not count (first_at_rest = 1);
+  // the best, 1e-4, is reached at index 2, then the residual bounces above it.
+  std::vector<Real> residual{1e-10, 1e-2, 1e-4};
+  for (int i = 0; i < 7; ++i) residual.push_back(i % 2 ? 3e-4 : 2e-3);
+  const NewtonOptions options = budget(20);
+  CHECK(no_progress_stall(residual, 1, options).empty());  // 7 steps since the best
+  residual.push_back(5e-4);
+  CHECK_THAT(no_progress_stall(residual, 1, options),
+             Catch::Contains("no progress") && Catch::Contains("0.0001") && Catch::Contains("for 8 steps"));
+  // A new best restarts the count; counted from index 0 the platen step's 1e-10 would be
+  // the best and stop every solve.
+  residual.push_back(9e-5);
+  CHECK(no_progress_stall(residual, 1, options).empty());
+  CHECK_FALSE(no_progress_stall(residual, 0, options).empty());
+  NewtonOptions off = options;
+  off.stall_window = 0;
+  CHECK(no_progress_stall(std::vector<Real>(30, 1.0), 0, off).empty());
+}
