@@ -5,8 +5,9 @@
 #   E*  = k H / A: H the lattice height between the plates, A its footprint, MPa
 #         (both from latmpm-post's metrics.csv over the initial runs, OUT_DIR/initial/;
 #         definitions in docs/post.md)
-#   P_c = where run-<l>-path's static path ends (load maximum or no convergence), N, with the
-#         travel there; "—" when it did not end within the travel
+#   P_c = where run-<l>-path's static path ends (load maximum, indefinite tangent, or a Newton
+#         failure at the smallest step), N, with the travel there; "—" when it did not end
+#         within the travel
 # Every number is computed by latmpm-post or the static run (status.toml); this script copies.
 set -euo pipefail
 bin=$1 out=$2
@@ -39,6 +40,12 @@ for l in "$@"; do
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
+    # Anything but the two instability tests is Newton's own failure text (with commas):
+    # the table names the kind, status.toml and log.txt keep the text.
+    case "$reason" in
+      "load maximum" | "tangent not positive definite") ;;
+      *) reason="Newton failure at the smallest step" ;;
+    esac
     travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')  # m -> mm
   else
     reason="none within the travel" travel="" load=""
