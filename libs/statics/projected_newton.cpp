@@ -1,6 +1,7 @@
 #include "statics/projected_newton.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -38,6 +39,7 @@ Real step_bound(const StaticProblem& problem, const Vector& u, const Vector& d, 
 
 std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
                                      const NewtonOptions& options) {
+  assert(residual.size() == projected_at_rest.size() + 1);
   const int window = options.stall_window;
   const int steps = int(projected_at_rest.size());
   if (window <= 0 || steps < window) return {};
@@ -45,18 +47,22 @@ std::string linear_convergence_stall(const std::vector<Real>& residual, const st
     const Real ratio = residual[size_t(i) + 1] / residual[size_t(i)];
     if (!projected_at_rest[size_t(i)] || !(ratio >= options.stall_ratio && ratio < 1)) return {};
   }
+  // Every ratio < 1, so the window's fall is < 1 and its logarithm negative (no pow that could
+  // round a rate near 1 to 1).
   const Real now = residual.back();
-  const Real rate = std::pow(now / residual[size_t(steps - window)], Real(1) / Real(window));
-  const Real needed = std::ceil(std::log(options.tolerance / now) / std::log(rate));
+  const Real log_fall = std::log(now / residual[size_t(steps - window)]);
+  const Real needed = std::ceil(Real(window) * std::log(options.tolerance / now) / log_fall);
   if (steps + needed <= options.max_iterations) return {};
+  const Real rate = std::exp(log_fall / Real(window));
   char text[200];
   std::snprintf(text, sizeof text,
-                "converging linearly (relative residual %.3g, x%.2f a step over %d projected steps): "
+                "converging linearly (relative residual %.3g, x%.3g a step over %d projected steps): "
                 "%.0f more steps to the tolerance, %d left",
                 now, rate, window, needed, options.max_iterations - steps);
   return text;
 }
 std::string no_progress_stall(const std::vector<Real>& residual, size_t first_at_rest, const NewtonOptions& options) {
+  assert(first_at_rest < residual.size());
   const size_t span = 2 * size_t(std::max(options.stall_window, 0));
   if (span == 0 || residual.size() <= first_at_rest + span) return {};
   const auto best = std::min_element(residual.begin() + std::ptrdiff_t(first_at_rest), residual.end());

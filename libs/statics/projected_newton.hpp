@@ -67,11 +67,18 @@ struct NewtonOptions {
   // Near a lattice's instability such a solve creeps towards a buckled state at 0.7–0.95 a
   // step and never converges (docs/statics.md): each failed attempt there cost the whole
   // budget, ~20 steps of ~25 s. Alternating true-tangent/projected steps, whose residual
-  // rises and falls, do not qualify: those solves do converge. Before the rule fails a solve
-  // that is skipping an indefinite true tangent, the true tangent is tried once more. A
-  // second rule stops a solve whose residual has not set a new best for 2 × stall_window
-  // steps (no_progress_stall). 0: never stop early.
-  int stall_window = 4;
+  // rises and falls, do not qualify (the slow increments that converge on those paths are of
+  // that kind). Before the rule fails a solve that is skipping an indefinite true tangent,
+  // the true tangent is tried once more (and the window starts again). A second rule stops a
+  // solve whose residual has not set a new best for 2 × stall_window steps
+  // (no_progress_stall). Both can stop a solve that would still have converged within its
+  // budget: the linear rule extrapolates the rate to the tolerance, not to the next scheduled
+  // retry of the true tangent (retry_true_tangent_after), which may converge quadratically;
+  // the other stops a residual that rises for 2 × stall_window steps before it falls. The
+  // displacement control then halves the step (docs/statics.md). 0 (the library default:
+  // load continuation and the optimiser's compliance solves run to their budget): never stop
+  // early. The static run's default is 4 (StaticSettings::stall_window).
+  int stall_window = 0;
   Real stall_ratio = 0.6;
   // Asked before each step: true stops the solve unconverged (NewtonReport::stopped), as a
   // signal stops a run between steps (core/interruption.hpp). Empty: never.
@@ -79,8 +86,10 @@ struct NewtonOptions {
   // Told after each step: on a paper-size lattice one Newton step is ~10 s and an increment
   // that does not converge takes tens of minutes, so the run logs every step.
   std::function<void(const NewtonStep&)> on_step;
-  // Told where a solve ends unconverged (not where a stop request ended it), with why: the
-  // caller then halves the step or ends the path, and the log says which failure that was.
+  // Told where a solve ends unconverged (not where a stop request ended it), with why; the
+  // caller may solve the same increment again (from the last equilibrium, or factorising
+  // only), halve the step, or end the path, so a failure in the log may be followed by a
+  // converged increment.
   std::function<void(const std::string&)> on_failure;
 };
 

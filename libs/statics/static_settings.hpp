@@ -43,8 +43,9 @@ struct StaticSettings {
   int newton_iterations = 50;
   int bisections = 6;
   // Projected steps of steady linear convergence after which a Newton solve that cannot reach
-  // the tolerance within newton_iterations at that rate counts as failed at once
-  // (NewtonOptions::stall_window; 0: only at the budget).
+  // the tolerance within newton_iterations at that rate counts as failed at once (after one
+  // more true-tangent try), and half the steps a solve may go without a new best residual
+  // (NewtonOptions::stall_window; 0: a solve fails only at its budget).
   int stall_window = 4;
 };
 

@@ -40,11 +40,13 @@ for l in "$@"; do
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
-    # Anything but the two instability tests is Newton's own failure text (with commas):
-    # the table names the kind, status.toml and log.txt keep the text.
+    # Newton's own failure texts (projected_newton.cpp; with commas): the table names the
+    # kind, status.toml and log.txt keep the text. Any other reason passes, its commas made
+    # semicolons so that the CSV row stays whole.
     case "$reason" in
-      "load maximum" | "tangent not positive definite") ;;
-      *) reason="Newton failure at the smallest step" ;;
+      "no convergence in "* | "converging linearly"* | "no progress"* | "the line search"* | "the projected Hessian"*)
+        reason="Newton failure at the smallest step" ;;
+      *) reason=${reason//,/;} ;;
     esac
     travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')  # m -> mm
   else

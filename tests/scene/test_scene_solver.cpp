@@ -68,5 +68,7 @@ TEST_CASE("Static solver errors name the line and the key", "[scene]") {
              Catch::Contains("scene.toml:15") && Catch::Contains("bisections"));
   CHECK_THAT(message(scene_with("kind = \"static\"\nstall_window = -1")),
              Catch::Contains("scene.toml:15") && Catch::Contains("stall_window"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nstall_window = 10001")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("stall_window"));
   CHECK_THAT(message(scene_with("kind = \"quasi\"")), Catch::Contains("kind"));
 }

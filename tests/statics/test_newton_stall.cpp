@@ -1,9 +1,11 @@
-// The stall rule (NewtonOptions::stall_window): a Newton solve whose projected steps converge
-// linearly, too slowly to reach the tolerance within its budget, stops at once; solves that
-// converge, or whose residual rises and falls between true-tangent and projected steps, are
+// The stall rules (NewtonOptions::stall_window): a Newton solve whose projected steps converge
+// linearly, too slowly to reach the tolerance within its budget, stops at once, and so does
+// one whose residual sets no new best for 2 x stall_window steps; solves whose rate fits their
+// budget, or whose residual rises and falls between true-tangent and projected steps, are
 // left alone.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -47,6 +49,7 @@ NewtonOptions budget(int max_iterations) {
   NewtonOptions options;
   options.tolerance = 1e-8;
   options.max_iterations = max_iterations;
+  options.stall_window = 4;  // the static run's default (the library's is 0)
   return options;
 }
 }  // namespace
@@ -60,7 +63,7 @@ TEST_CASE("Steady linear convergence that cannot reach the tolerance in the budg
   const int needed = int(std::ceil(std::log(1e-8 / now) / std::log(0.8)));
   REQUIRE(needed == 58);
   const std::string stop = linear_convergence_stall(h.residual, h.projected_at_rest, budget(20));
-  CHECK_THAT(stop, Catch::Contains("converging linearly") && Catch::Contains("x0.80") &&
+  CHECK_THAT(stop, Catch::Contains("converging linearly") && Catch::Contains("x0.8 a step") &&
                        Catch::Contains("58 more steps") && Catch::Contains("15 left"));
   // The same history with a budget that holds those steps goes on; one step short stops.
   CHECK(linear_convergence_stall(h.residual, h.projected_at_rest, budget(5 + needed)).empty());
@@ -88,24 +91,65 @@ TEST_CASE("Fast, rising or true-tangent steps are not a stall", "[statics]") {
   CHECK(linear_convergence_stall(true_step.residual, true_step.projected_at_rest, budget(20)).empty());
 }
 
-TEST_CASE("A converging solve takes the same steps with the stall rule as without it", "[statics]") {
-  // The neo-Hookean cube compressed 40 % in one solve: converges, so the rule must not act.
-  for (const int max_iterations : {50, 12}) {
+TEST_CASE("A converging solve takes the same steps with the stall rules as without them", "[statics]") {
+  // The neo-Hookean cube compressed 40 % by projected steps only (the true tangent never
+  // tried): linear convergence at ~x0.45 a step, which the linear rule examines at every
+  // step once stall_ratio is lowered to 0.3; with a budget that holds the solve it must
+  // never act. Then the default solve (true tangent from the second step).
+  for (const bool projected_only : {true, false}) {
     std::vector<Vector> results;
     std::vector<int> iterations;
     for (const int window : {4, 0}) {
-      NewtonOptions options;
-      options.max_iterations = max_iterations;
+      NewtonOptions options = budget(40);
       options.stall_window = window;
+      if (projected_only) options.true_tangent_below = 0, options.stall_ratio = 0.3;
+      int projected_at_rest = 0;
+      options.on_step = [&](const NewtonStep& s) { projected_at_rest += s.iteration > 1 && !s.true_tangent; };
       Vector u;
       const NewtonReport report = solve_compressed_cube(options, u);
       REQUIRE(report.converged);
+      if (projected_only) CHECK(projected_at_rest >= 10);  // the window was filled, many times
       results.push_back(u);
       iterations.push_back(report.iterations);
     }
     CHECK(iterations[0] == iterations[1]);
     CHECK((results[0] - results[1]).norm() == 0);
   }
+}
+
+TEST_CASE("Inside a solve, the rules stop linear creep and round-off, counted from the platen step",
+          "[statics]") {
+  // Linear creep: the projected-only solve above with a budget of 15 steps, which it cannot
+  // meet at x0.45 a step from 0.128 to 1e-8 (23 steps). It stops early, by the linear rule,
+  // on the same residuals as the solve with a budget that holds it.
+  NewtonOptions creep = budget(15);
+  creep.tolerance = 1e-8;
+  creep.true_tangent_below = 0;
+  creep.stall_ratio = 0.3;
+  Vector u;
+  const NewtonReport stopped = solve_compressed_cube(creep, u);
+  CHECK_FALSE(stopped.converged);
+  CHECK_THAT(stopped.failure, Catch::Contains("converging linearly"));
+  CHECK(stopped.iterations < 15);
+  creep.max_iterations = 40;
+  const NewtonReport finished = solve_compressed_cube(creep, u);
+  REQUIRE(finished.converged);
+  CHECK(finished.iterations > 15);
+  for (size_t i = 0; i < stopped.residual.size(); ++i) CHECK(stopped.residual[i] == finished.residual[i]);
+
+  // Round-off: a tolerance no solve reaches. The residual falls to ~1e-15 and then wanders;
+  // the solve stops 2 x 4 steps after its best, counted from the first residual with the
+  // platen in place (index 1: the start's residual, 0, comes before the platen moves and
+  // would stop the solve at step 8).
+  NewtonOptions unreachable = budget(50);
+  unreachable.tolerance = 1e-30;
+  const NewtonReport wander = solve_compressed_cube(unreachable, u);
+  CHECK_FALSE(wander.converged);
+  CHECK_THAT(wander.failure, Catch::Contains("no progress"));
+  const auto best = std::min_element(wander.residual.begin() + 1, wander.residual.end());
+  CHECK(*best < 1e-13);
+  CHECK(wander.iterations == int(best - wander.residual.begin()) + 8);
+  CHECK(wander.iterations < 50);
 }
 
 TEST_CASE("A solve that fails tells why once; a converged one never", "[statics]") {
@@ -146,3 +190,4 @@ TEST_CASE("A residual that sets no new best for twice the window stops the solve
   off.stall_window = 0;
   CHECK(no_progress_stall(std::vector<Real>(30, 1.0), 0, off).empty());
 }
+
