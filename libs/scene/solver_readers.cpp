@@ -178,6 +178,10 @@ void read(TableReader& solver, statics::StaticSettings& s) {
   const long bisections = solver.integer("bisections", s.bisections);
   if (bisections < 0 || bisections > 60) solver.fail("bisections", "must lie in [0, 60] (halvings of the step after a Newton failure)");
   s.bisections = int(bisections);
+  const long stall_window = solver.integer("stall_window", s.stall_window);
+  if (stall_window < 0 || stall_window > 10000)
+    solver.fail("stall_window", "must lie in [0, 10000] (projected Newton steps of steady linear convergence; 0: off)");
+  s.stall_window = int(stall_window);
   s.stabilisation = solver.number("stabilisation", s.stabilisation);
   if (!(s.stabilisation >= 0 && s.stabilisation < 1)) solver.fail("stabilisation", "must lie in [0, 1)");
 }

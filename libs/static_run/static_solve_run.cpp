@@ -106,6 +106,7 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
   newton.tolerance = scene.solver.statics.tolerance;
   newton.krylov_iterations = scene.solver.statics.krylov_iterations;
   newton.max_iterations = scene.solver.statics.newton_iterations;
+  newton.stall_window = scene.solver.statics.stall_window;
   newton.stop_requested = [] { return interruption_signal() != 0; };
 
   std::filesystem::create_directories(run_dir);
@@ -186,6 +187,9 @@ StaticSolveSummary run_static_scene(const Scene& scene, Provenance provenance, c
               : solver.is_direct()   ? std::string("factorised")
                                      : std::to_string(s.linear_iterations) + " iterations") +
              ", step " + format_number("%.3g", s.alpha));
+  };
+  newton.on_failure = [&](const std::string& why) {
+    log.line("  increment " + std::to_string(step + 1) + ": Newton failed: " + why);
   };
   std::optional<statics::PhaseTimer> path_timer(path_time);
   const statics::PathReport path = statics::load_by_platen(problem, sp.loading, solver, newton, observe);

@@ -60,12 +60,37 @@ struct NewtonOptions {
   // convergence); only where that fails is the matrix factorised. 0: every step factorises.
   int krylov_iterations = 0;
   Real krylov_forcing = 1e-2;
+  // Stop on slow convergence: where the last `stall_window` steps were all projected (the
+  // true tangent indefinite or not tried) and each cut the residual by a factor in
+  // [stall_ratio, 1), convergence is linear, and where at that rate (their geometric mean)
+  // the tolerance lies beyond max_iterations the solve fails now instead of at the budget.
+  // Near a lattice's instability such a solve creeps towards a buckled state at 0.7–0.95 a
+  // step and never converges (docs/statics.md): each failed attempt there cost the whole
+  // budget, ~20 steps of ~25 s. Alternating true-tangent/projected steps, whose residual
+  // rises and falls, do not qualify (the slow increments that converge on those paths are of
+  // that kind). Before the rule fails a solve that is skipping an indefinite true tangent,
+  // the true tangent is tried once more (and the window starts again). A second rule stops a
+  // solve whose residual has not set a new best for 2 × stall_window steps
+  // (no_progress_stall). Both can stop a solve that would still have converged within its
+  // budget: the linear rule extrapolates the rate to the tolerance, not to the next scheduled
+  // retry of the true tangent (retry_true_tangent_after), which may converge quadratically;
+  // the other stops a residual that rises for 2 × stall_window steps before it falls. The
+  // displacement control then halves the step (docs/statics.md). 0 (the library default:
+  // load continuation and the optimiser's compliance solves run to their budget): never stop
+  // early. The static run's default is 4 (StaticSettings::stall_window).
+  int stall_window = 0;
+  Real stall_ratio = 0.6;
   // Asked before each step: true stops the solve unconverged (NewtonReport::stopped), as a
   // signal stops a run between steps (core/interruption.hpp). Empty: never.
   std::function<bool()> stop_requested;
   // Told after each step: on a paper-size lattice one Newton step is ~10 s and an increment
   // that does not converge takes tens of minutes, so the run logs every step.
   std::function<void(const NewtonStep&)> on_step;
+  // Told where a solve ends unconverged (not where a stop request ended it), with why; the
+  // caller may solve the same increment again (from the last equilibrium, or factorising
+  // only), halve the step, or end the path, so a failure in the log may be followed by a
+  // converged increment.
+  std::function<void(const std::string&)> on_failure;
 };
 
 struct NewtonReport {
@@ -84,6 +109,20 @@ struct NewtonReport {
   std::string failure;            // why it stopped without converging
   bool stopped = false;           // stop_requested() ended it (not a failure of the method)
 };
+
+// The stall rule of NewtonOptions::stall_window, applied before each step: empty where the
+// solve may go on, else why it stops. residual[i] is the relative residual before step i + 1
+// (the last entry the current one); projected_at_rest[i] says whether step i + 1 was a
+// projected step with the prescribed unknowns already in place.
+std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
+                                     const NewtonOptions& options);
+
+// The second stall rule: empty where the solve may go on; else, where the relative residual
+// has not gone below its best since first_at_rest (the first residual with the prescribed
+// unknowns in place) for 2 × stall_window steps, why it stops. Converging solves whose
+// true-tangent and projected steps alternate set a new best every 2–3 steps (paper-size T2P40,
+// docs/statics.md); a true-tangent solve that bounces near a bifurcation does not.
+std::string no_progress_stall(const std::vector<Real>& residual, size_t first_at_rest, const NewtonOptions& options);
 
 // u: the start on entry (prescribed unknowns may differ from their values), the result on
 // return. Never evaluates the energy of an F with det F ≤ 0.

@@ -42,6 +42,11 @@ struct StaticSettings {
   // smallest step up to three (docs/statics.md).
   int newton_iterations = 50;
   int bisections = 6;
+  // Projected steps of steady linear convergence after which a Newton solve that cannot reach
+  // the tolerance within newton_iterations at that rate counts as failed at once (after one
+  // more true-tangent try), and half the steps a solve may go without a new best residual
+  // (NewtonOptions::stall_window; 0: a solve fails only at its budget).
+  int stall_window = 4;
 };
 
 }  // namespace latmpm::statics

@@ -5,8 +5,9 @@
 #   E*  = k H / A: H the lattice height between the plates, A its footprint, MPa
 #         (both from latmpm-post's metrics.csv over the initial runs, OUT_DIR/initial/;
 #         definitions in docs/post.md)
-#   P_c = where run-<l>-path's static path ends (load maximum or no convergence), N, with the
-#         travel there; "—" when it did not end within the travel
+#   P_c = where run-<l>-path's static path ends (load maximum, indefinite tangent, or a Newton
+#         failure at the smallest step), N, with the travel there; "—" when it did not end
+#         within the travel
 # Every number is computed by latmpm-post or the static run (status.toml); this script copies.
 set -euo pipefail
 bin=$1 out=$2
@@ -39,6 +40,14 @@ for l in "$@"; do
     reason="path not run" travel="" load=""
   elif [ -n "$end" ]; then
     IFS=';' read -r reason travel load <<< "$end"
+    # Newton's own failure texts (projected_newton.cpp; with commas): the table names the
+    # kind, status.toml and log.txt keep the text. Any other reason passes, its commas made
+    # semicolons so that the CSV row stays whole.
+    case "$reason" in
+      "no convergence in "* | "converging linearly"* | "no progress"* | "the line search"* | "the projected Hessian"*)
+        reason="Newton failure at the smallest step" ;;
+      *) reason=${reason//,/;} ;;
+    esac
     travel=$(awk -v x="$travel" 'BEGIN { printf "%.4g", x * 1e3 }')  # m -> mm
   else
     reason="none within the travel" travel="" load=""

@@ -28,7 +28,7 @@ TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static 
   CHECK(parse(scene_with("")).solver.kind == SolverSpec::explicit_dynamics);
   const Scene s = parse(scene_with("kind = \"static\"\nincrements = 8\nlinear_solver = \"ldlt\"\n"
                                    "tolerance = 1e-9\ncheck_stability = false\nstabilisation = 0.05\n"
-                                   "newton_iterations = 20\nbisections = 3"));
+                                   "newton_iterations = 20\nbisections = 3\nstall_window = 0"));
   CHECK(s.solver.kind == SolverSpec::static_equilibrium);
   CHECK(s.solver.statics.increments == 8);
   CHECK(s.solver.statics.linear_solver == statics::LinearSolverKind::ldlt);
@@ -37,10 +37,12 @@ TEST_CASE("A scene runs the explicit solver unless [solver] asks for the static 
   CHECK(s.solver.statics.stabilisation == 0.05);
   CHECK(s.solver.statics.newton_iterations == 20);
   CHECK(s.solver.statics.bisections == 3);
+  CHECK(s.solver.statics.stall_window == 0);
   const Scene defaults = parse(scene_with("kind = \"static\""));
   CHECK(defaults.solver.statics.stabilisation == 0.1);
   CHECK(defaults.solver.statics.newton_iterations == 50);
   CHECK(defaults.solver.statics.bisections == 6);
+  CHECK(defaults.solver.statics.stall_window == 4);
 }
 
 TEST_CASE("Static solver errors name the line and the key", "[scene]") {
@@ -64,5 +66,9 @@ TEST_CASE("Static solver errors name the line and the key", "[scene]") {
              Catch::Contains("scene.toml:15") && Catch::Contains("newton_iterations"));
   CHECK_THAT(message(scene_with("kind = \"static\"\nbisections = -1")),
              Catch::Contains("scene.toml:15") && Catch::Contains("bisections"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nstall_window = -1")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("stall_window"));
+  CHECK_THAT(message(scene_with("kind = \"static\"\nstall_window = 10001")),
+             Catch::Contains("scene.toml:15") && Catch::Contains("stall_window"));
   CHECK_THAT(message(scene_with("kind = \"quasi\"")), Catch::Contains("kind"));
 }
