@@ -7,10 +7,13 @@
 # end (the lattice unloaded and free), the kinetic energy at the end, the lattice's height
 # change (lattice_height.py) and what of the points' strain their positions show
 # (strain_compatibility.py, interior points).
-#   usage: lattice_set_study.sh BIN_DIR OUT_DIR     (~3 min of CPU; writes OUT_DIR/table.md)
+# The last rows filter F's null space (grid.null_space_filter, docs/solver.md "Null-space filter").
+#   usage: lattice_set_study.sh BIN_DIR OUT_DIR [ROWS]   (~3 min of CPU; writes OUT_DIR/table.md)
+#   ROWS: an extended regular expression; only the rows whose setting matches it run.
 set -euo pipefail
-bin=${1:?usage: lattice_set_study.sh BIN_DIR OUT_DIR}
-out=${2:?usage: lattice_set_study.sh BIN_DIR OUT_DIR}
+bin=${1:?usage: lattice_set_study.sh BIN_DIR OUT_DIR [ROWS]}
+out=${2:?usage: lattice_set_study.sh BIN_DIR OUT_DIR [ROWS]}
+select=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 mkdir -p "$out"
@@ -53,6 +56,9 @@ rows=(
   "3 points per cell per direction|3|"
   "4 points per cell per direction|4|"
   "grid 0.5 mm (2 points per cell), 4 m/s|h0.5|grid.cell=0.5mm ${slow[*]}"
+  "null-space filter on F, every step|2|grid.null_space_filter=deformation"
+  "null-space filter on F, every 10 steps|2|grid.null_space_filter=deformation grid.null_space_filter_every=10"
+  "null-space filter on F, every 100 steps|2|grid.null_space_filter=deformation grid.null_space_filter_every=100"
 )
 {
   echo "| setting (one T2P30 cell, elastic, frictionless, 2.8 mm and back) | strain energy: peak, end (J) | end / peak | kinetic at the end (J) | height change (mm) | interior: mean \|E(F)\|, \|E(G)\|, \|E(F)\| over the block | interior energy of F, of G (J) | CPU (s) |"
@@ -63,6 +69,7 @@ n=0
 for row in "${rows[@]}"; do
   IFS='|' read -r label points overrides <<< "$row"
   n=$((n + 1))
+  if [ -n "$select" ] && ! grep -Eq -- "$select" <<< "$label"; then continue; fi
   run="$out/run-$n"
   sets=()
   for s in "${cell[@]}" $overrides; do sets+=(--set "$s"); done

@@ -35,6 +35,8 @@ constexpr std::array<std::tuple<ShapeFunctionKind, const char*, double>, 7> shap
 }};
 constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
     {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};
+constexpr std::array<std::pair<NullSpaceFilter, const char*>, 2> filter_names{{
+    {NullSpaceFilter::none, "none"}, {NullSpaceFilter::deformation, "deformation"}}};
 constexpr std::array<std::pair<MaterialKind, const char*>, 3> material_names{{
     {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}, {MaterialKind::j2, "j2"}}};
 constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{
@@ -59,6 +61,12 @@ std::string to_string(UpdateScheme scheme) { return name_of(scheme, scheme_names
 UpdateScheme parse_update_scheme(const std::string& name, const std::string& where,
                                  const std::string& field) {
   return parse_name(name, scheme_names, where, field);
+}
+std::string to_string(NullSpaceFilter filter) { return name_of(filter, filter_names); }
+std::vector<std::string> null_space_filter_names() { return names_in(filter_names); }
+NullSpaceFilter parse_null_space_filter(const std::string& name, const std::string& where,
+                                        const std::string& field) {
+  return parse_name(name, filter_names, where, field);
 }
 std::string to_string(MaterialKind kind) { return name_of(kind, material_names); }
 MaterialKind parse_material_kind(const std::string& name, const std::string& where,

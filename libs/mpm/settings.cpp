@@ -16,6 +16,9 @@ void validate(const Settings& s, const std::string& where) {
     throw InputError(where, "time_step", "must be a non-negative time");
   if (!(s.max_time_step >= 0) || !std::isfinite(s.max_time_step))
     throw InputError(where, "max_time_step", "must be a non-negative time");
+  if (s.null_space_filter != NullSpaceFilter::none && s.shape_function == ShapeFunctionKind::cpdi1)
+    throw InputError(where, "null_space_filter", "is not available for cpdi1 (its stencils are not tensor products)");
+  if (s.null_space_filter_every < 1) throw InputError(where, "null_space_filter_every", "must be at least 1 (steps)");
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1))
     throw InputError(where, "ddmp_alpha_peak", "must lie in (0, 1]");
   if (!positive(s.ddmp_alpha_exponent)) throw InputError(where, "ddmp_alpha_exponent", "must be positive");

@@ -23,6 +23,15 @@ UpdateScheme parse_update_scheme(const std::string& name, const std::string& whe
 // The scheme a run takes unless it names one: MUSL for linear shapes, USL otherwise (names.cpp).
 UpdateScheme default_scheme(ShapeFunctionKind shape);
 
+// What the step filters out of the particles' state after each gather (null_space_filter.hpp):
+// nothing, or the part of F in the null space of the particle-to-grid map (Gritton, Berzins &
+// Kirby 2017), which the grid can neither see nor unload.
+enum class NullSpaceFilter { none, deformation };
+std::string to_string(NullSpaceFilter filter);
+std::vector<std::string> null_space_filter_names();  // names.cpp
+NullSpaceFilter parse_null_space_filter(const std::string& name, const std::string& where = "",
+                                        const std::string& field = "");
+
 struct Settings {
   Real cell_size = 0;  // h, m: background grid cell, nodes at i·h (the origin is a node)
   ShapeFunctionKind shape_function = ShapeFunctionKind::ugimp;
@@ -30,6 +39,10 @@ struct Settings {
   // Weight of FLIP in the particle velocity update, 0 = PIC, 1 = FLIP. 0.99 is usual:
   // almost no numerical damping, enough to stop ringing of the grid's null modes.
   Real flip_blend = 0.99;
+  // The null-space filter on F, applied after every `null_space_filter_every`-th step
+  // (docs/solver.md, "Null-space filter"); off by default.
+  NullSpaceFilter null_space_filter = NullSpaceFilter::none;
+  int null_space_filter_every = 1;  // steps, ≥ 1
   // DDMP's partition function α = peak · Π_axes [4 f (1 − f)]^exponent, f the point's
   // position in its cell (shape_ddmp.hpp): the default is Paper A's Eq. 5 in 3D; the two
   // numbers stay settings for studies.

@@ -8,6 +8,7 @@
 
 #include "mpm/cpdi_particles.hpp"
 #include "mpm/gimp_domains.hpp"
+#include "mpm/null_space_filter.hpp"
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/step_stages.hpp"
@@ -33,6 +34,13 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     if (it == by_name.end()) throw InputError(where, "bodies", "no settings for body '" + name + "' of the point set");
     const BodySettings& b = *it->second;
     if (b.role == BodyRole::deformable) validate(b.material, where, "bodies." + name + ".material");
+    // The filter changes F and takes the stress from it again: models with a stress history
+    // (linear elastic's rate form, J2's be) would need their history filtered too.
+    if (b.role == BodyRole::deformable && settings_.null_space_filter != NullSpaceFilter::none &&
+        b.material.kind != MaterialKind::neo_hookean)
+      throw InputError(where, "null_space_filter",
+                       "needs a material whose stress is a function of F alone (neo_hookean); body '" + name +
+                           "' is " + to_string(b.material.kind));
     if (!b.velocity.allFinite()) throw InputError(where, "bodies." + name + ".velocity", "must be finite");
     if (b.hold_slip && b.hold_tag.empty())
       throw InputError(where, "bodies." + name + ".hold.slip", "needs a hold tag");
@@ -251,6 +259,13 @@ void Simulation::advance(Real dt) {
   if (context_->refresh_needed) refresh_carried(state_, *context_);
   const Real stable = mpm::stable_time_step(state_, *context_);
   step_scheme(state_, *context_, dt);
+  if (settings_.null_space_filter != NullSpaceFilter::none &&
+      (state_.diagnostics.step + 1) % settings_.null_space_filter_every == 0) {
+    // The strain energy the filter removes is a numerical loss of the transfer, booked with it.
+    const Real removed = filter_deformation_gradients(state_, *context_);
+    context_->sums.strain -= removed;
+    context_->sums.transfer_dissipation += removed;
+  }
   finish_step(dt, stable);
 }
 

@@ -164,7 +164,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   std::istringstream summary(points_summary_);
   for (std::string l; std::getline(summary, l);) log.line(l);
   log.line("grid: cell " + format_number("%g", scene_.settings.cell_size) + " m, shape " + to_string(scene_.settings.shape_function) +
-           ", scheme " + to_string(scene_.settings.scheme) + ", flip " + format_number("%g", scene_.settings.flip_blend));
+           ", scheme " + to_string(scene_.settings.scheme) + ", flip " + format_number("%g", scene_.settings.flip_blend) +
+           (scene_.settings.null_space_filter == mpm::NullSpaceFilter::none
+                ? std::string()
+                : ", null-space filter " + to_string(scene_.settings.null_space_filter) + " every " +
+                      std::to_string(scene_.settings.null_space_filter_every) + " steps"));
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();

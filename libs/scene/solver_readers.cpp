@@ -15,6 +15,11 @@ void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReade
       grid.choice("scheme", mpm::update_scheme_names(), mpm::to_string(mpm::default_scheme(s.shape_function))));
   s.flip_blend = grid.number("flip", s.flip_blend);
   if (s.flip_blend < 0 || s.flip_blend > 1) grid.fail("flip", "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+  s.null_space_filter = mpm::parse_null_space_filter(
+      grid.choice("null_space_filter", mpm::null_space_filter_names(), mpm::to_string(s.null_space_filter)));
+  const long every = grid.integer("null_space_filter_every", s.null_space_filter_every);
+  if (every < 1 || every > std::numeric_limits<int>::max()) grid.fail("null_space_filter_every", "must be at least 1 (steps)");
+  s.null_space_filter_every = int(every);
   s.ddmp_alpha_peak = grid.number("ddmp_alpha_peak", s.ddmp_alpha_peak);
   if (!(s.ddmp_alpha_peak > 0 && s.ddmp_alpha_peak <= 1)) grid.fail("ddmp_alpha_peak", "must lie in (0, 1]");
   s.ddmp_alpha_exponent = grid.number("ddmp_alpha_exponent", s.ddmp_alpha_exponent);

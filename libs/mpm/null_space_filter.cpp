@@ -1,0 +1,158 @@
+// The null-space filter (null_space_filter.hpp): a body's F⁻¹ projected onto the gradients of
+// the grid's fields, by a sparse direct solve of the normal equations.
+#include "mpm/null_space_filter.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+#include <Eigen/SparseCholesky>
+
+#include "core/errors.hpp"
+#include "mpm/step_stages.hpp"
+
+namespace latmpm::mpm {
+
+namespace {
+uint64_t node_key(int i, int j, int k) {
+  constexpr int64_t offset = int64_t(1) << 20;
+  return (uint64_t(i + offset) << 42) | (uint64_t(j + offset) << 21) | uint64_t(k + offset);
+}
+}  // namespace
+
+void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t>& points, ShapeFunctionKind shape,
+                                 Real h, PointValues& tensors) {
+  // Per point its nodes and gradients ∇S_Ip (entries first[n] .. first[n + 1]).
+  std::unordered_map<uint64_t, int> index;
+  std::vector<uint32_t> first{0};
+  std::vector<int> node;
+  std::vector<Vec3> gradient;
+  with_shape_function(shape, [&](auto policy) {
+    using Shape = decltype(policy);
+    if constexpr (Shape::uses_domain_vertices) {
+      throw InputError("", "null_space_filter", "is not available for cpdi1 (its stencils are not tensor products)");
+    } else {
+      // DDMP: its force takes the linear gradients plus a smoothed part on the grid
+      // (shape_ddmp.hpp); the filter takes the linear ones.
+      using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
+      constexpr int N = Weights::nodes_per_axis;
+      for (uint32_t p : points) {
+        const auto st = make_stencil<Weights>(ps.position[p], stencil_half_size<Weights>(ps, p, h), 1 / h);
+        for (int i = 0; i < N; ++i)
+          for (int j = 0; j < N; ++j)
+            for (int k = 0; k < N; ++k) {
+              const Vec3 g(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
+                           st.w[i][0] * st.w[j][1] * st.dw[k][2]);
+              if (!(g.squaredNorm() > 0)) continue;
+              const auto it = index.try_emplace(node_key(st.base[0] + i, st.base[1] + j, st.base[2] + k), int(index.size())).first;
+              node.push_back(it->second);
+              gradient.push_back(g);
+            }
+        first.push_back(uint32_t(node.size()));
+      }
+    }
+  });
+  const int nodes = int(index.size());
+  if (nodes == 0) return;
+  // The mass-weighted mean is the gradient of a linear field, which every shape reproduces:
+  // it is kept as it is and only the rest projected, so a uniform F (a body at rest) comes
+  // back to the last bit whatever the solve's round-off and its regularisation below.
+  std::array<Real, 9> mean{};
+  Real mass = 0;
+  for (size_t n = 0; n < points.size(); ++n) {
+    const Real m = ps.mass[points[n]];
+    mass += m;
+    for (int k = 0; k < 9; ++k) mean[k] += m * tensors[n][k];
+  }
+  for (int k = 0; k < 9; ++k) mean[k] /= mass;
+  for (auto& row : tensors)
+    for (int k = 0; k < 9; ++k) row[k] -= mean[k];
+  // K = Gᵀ M G and the right-hand sides Gᵀ M T (column a: component a of X).
+  std::vector<Eigen::Triplet<Real>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nodes, 3);
+  for (size_t n = 0; n < points.size(); ++n) {
+    const Real m = ps.mass[points[n]];
+    for (uint32_t e = first[n]; e < first[n + 1]; ++e) {
+      for (uint32_t f = first[n]; f < first[n + 1]; ++f)
+        entries.emplace_back(node[e], node[f], m * gradient[e].dot(gradient[f]));
+      for (int a = 0; a < 3; ++a)
+        rhs(node[e], a) += m * Vec3(tensors[n][3 * a], tensors[n][3 * a + 1], tensors[n][3 * a + 2]).dot(gradient[e]);
+    }
+  }
+  Eigen::SparseMatrix<Real> K(nodes, nodes);
+  K.setFromTriplets(entries.begin(), entries.end());
+  entries = {};
+  // K is singular (a constant has no gradient): 1e-9 of each node's own diagonal makes it
+  // definite and touches nothing a gradient sees beyond that (a node at the edge of a
+  // B-spline's support has a diagonal far below the others').
+  for (int i = 0; i < nodes; ++i) K.coeffRef(i, i) *= 1 + 1e-9;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>> solver(K);
+  if (solver.info() != Eigen::Success) throw NumericalError("null-space filter: the grid's gradient system did not factorise");
+  const Eigen::MatrixXd u = solver.solve(rhs);  // column a: X_a at the nodes
+  // Σ_p m_p T̃_p = Σ_p m_p T_p holds for the exact projection (here: the rest sums to zero);
+  // the regularisation and round-off leave a difference, which a constant tensor (the
+  // gradient of a linear field) removes; then the mean goes back.
+  std::array<Real, 9> kept{};
+  for (size_t n = 0; n < points.size(); ++n) {
+    tensors[n] = {};
+    for (uint32_t e = first[n]; e < first[n + 1]; ++e)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) tensors[n][3 * a + b] += u(node[e], a) * gradient[e][b];
+    for (int k = 0; k < 9; ++k) kept[k] += ps.mass[points[n]] * tensors[n][k];
+  }
+  for (auto& row : tensors)
+    for (int k = 0; k < 9; ++k) row[k] += mean[k] - kept[k] / mass;
+}
+
+Real filter_deformation_gradients(SolverState& s, StepContext& c) {
+  if (c.domain.process_count() > 1)
+    throw InputError("", "null_space_filter", "runs on one process only (its projection is global over a body)");
+  Particles& ps = s.particles;
+  Real removed = 0;
+  for (size_t body = 0; body < c.body_info.size(); ++body) {
+    const BodyInfo& info = c.body_info[body];
+    if (info.role != BodyRole::deformable) continue;
+    std::vector<uint32_t> points;
+    for (size_t p = 0; p < ps.size(); ++p)
+      if (size_t(ps.body[p]) == body) points.push_back(uint32_t(p));
+    if (points.empty()) continue;
+    PointValues values(points.size());  // F⁻¹ = ∂X/∂x, row a the gradient of X_a
+    for (size_t n = 0; n < points.size(); ++n) {
+      const uint32_t p = points[n];
+      const Mat3 inverse = ps.deformation[p].cast<Real>().inverse();
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) values[n][3 * a + b] = inverse(a, b);
+      removed += ps.volume0[p] * energy_density(s, c, p);
+    }
+    project_onto_grid_gradients(ps, points, c.settings.shape_function, c.settings.cell_size, values);
+    for (size_t n = 0; n < points.size(); ++n) {
+      const uint32_t p = points[n];
+      Mat3 inverse;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) inverse(a, b) = values[n][3 * a + b];
+      const Mat3 f = inverse.inverse();
+      const Real j = f.determinant();
+      if (!(j > c.settings.min_jacobian) || !f.allFinite()) {
+        std::ostringstream msg;
+        msg << "step " << s.diagnostics.step + 1 << ": the null-space filter gives particle " << ps.id[p]
+            << " of body '" << c.bodies[body].name << "' J = " << j << " (<= " << c.settings.min_jacobian
+            << "); try a smaller cfl or time step";
+        throw NumericalError(msg.str());
+      }
+      ps.deformation[p] = f.cast<ParticleReal>();
+      const Deformation<Real> d = make_deformation(Mat3::Zero(), f, 0);
+      Real stress[6];
+      for (int k = 0; k < 6; ++k) stress[k] = ps.stress[p][k];
+      std::visit([&](const auto& model) {
+        // The set-up admits only models whose stress is a function of F (Simulation).
+        if constexpr (history_size<std::decay_t<decltype(model)>> == 0)
+          update_material_stress(model, d, stress, static_cast<Real*>(nullptr));
+      }, info.model);
+      for (int k = 0; k < 6; ++k) ps.stress[p][k] = ParticleReal(stress[k]);
+      removed -= ps.volume0[p] * energy_density(s, c, p);
+    }
+  }
+  return removed;
+}
+
+}  // namespace latmpm::mpm
