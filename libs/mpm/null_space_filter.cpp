@@ -9,20 +9,15 @@
 #include <Eigen/SparseCholesky>
 
 #include "core/errors.hpp"
+#include "mpm/sparse_grid.hpp"
 #include "mpm/step_stages.hpp"
 
 namespace latmpm::mpm {
 
-namespace {
-uint64_t node_key(int i, int j, int k) {
-  constexpr int64_t offset = int64_t(1) << 20;
-  return (uint64_t(i + offset) << 42) | (uint64_t(j + offset) << 21) | uint64_t(k + offset);
-}
-}  // namespace
-
 void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t>& points, ShapeFunctionKind shape,
                                  Real h, PointValues& tensors) {
-  // Per point its nodes and gradients ∇S_Ip (entries first[n] .. first[n + 1]).
+  // Per point its nodes and gradients ∇S_Ip (entries first[n] .. first[n + 1]); a node is
+  // keyed by the grid's own packing of three coordinates (SparseGrid::block_key).
   std::unordered_map<uint64_t, int> index;
   std::vector<uint32_t> first{0};
   std::vector<int> node;
@@ -44,7 +39,8 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
               const Vec3 g(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
                            st.w[i][0] * st.w[j][1] * st.dw[k][2]);
               if (!(g.squaredNorm() > 0)) continue;
-              const auto it = index.try_emplace(node_key(st.base[0] + i, st.base[1] + j, st.base[2] + k), int(index.size())).first;
+              const auto it = index.try_emplace(
+                  SparseGrid::block_key(st.base[0] + i, st.base[1] + j, st.base[2] + k), int(index.size())).first;
               node.push_back(it->second);
               gradient.push_back(g);
             }

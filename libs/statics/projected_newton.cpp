@@ -34,7 +34,6 @@ Real step_bound(const StaticProblem& problem, const Vector& u, const Vector& d, 
   for (Mat3& m : D) m -= Mat3::Identity();
   return std::min(Real(1), inversion_free_step(F, D, margin));
 }
-
 }  // namespace
 
 std::string linear_convergence_stall(const std::vector<Real>& residual, const std::vector<char>& projected_at_rest,
@@ -61,6 +60,7 @@ std::string linear_convergence_stall(const std::vector<Real>& residual, const st
                 now, rate, window, needed, options.max_iterations - steps);
   return text;
 }
+
 std::string no_progress_stall(const std::vector<Real>& residual, size_t first_at_rest, const NewtonOptions& options) {
   assert(first_at_rest < residual.size());
   const size_t span = 2 * size_t(std::max(options.stall_window, 0));
