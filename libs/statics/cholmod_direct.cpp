@@ -1,11 +1,11 @@
 #include "statics/cholmod_direct.hpp"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 
 #include <Eigen/CholmodSupport>
 #include <vector>
 
+#include "core/blas_threads.hpp"
 #include "core/errors.hpp"
 
 namespace latmpm::statics {
@@ -37,34 +37,6 @@ const char* ordering_name(int ordering) {
   }
   return "?";
 }
-
-// CHOLMOD's supernodal factorisation runs on BLAS. OpenBLAS's threads wait for work by
-// spinning on sched_yield: on small factorisations (< 1e10 flops, e.g. every test problem
-// and the QUICK lattices) that costs more system time than the threads save (test_statics
-// on the shared 2-core machine: 23 s system CPU with 2 BLAS threads, 2 s with 1). Those run
-// on one BLAS thread; larger ones keep the BLAS default. Looked up at run time, so that any
-// BLAS works (only OpenBLAS has the call).
-class SmallFactorisationThreads {
- public:
-  explicit SmallFactorisationThreads(double flops) {
-    using Get = int (*)();
-    auto get = reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    set_ = reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (!get || !set_ || flops >= 1e10) return;
-    saved_ = get();
-    if (saved_ > 1) set_(1);
-  }
-  ~SmallFactorisationThreads() {
-    if (saved_ > 1) set_(saved_);
-  }
-  SmallFactorisationThreads(const SmallFactorisationThreads&) = delete;
-  SmallFactorisationThreads& operator=(const SmallFactorisationThreads&) = delete;
-
- private:
-  using Set = void (*)(int);
-  Set set_ = nullptr;
-  int saved_ = 0;
-};
 
 // Whether K consists of full 3×3 blocks (node n: unknowns 3n..3n+2): columns 3n, 3n+1, 3n+2
 // share one pattern whose rows come in whole aligned triplets.
@@ -146,7 +118,7 @@ void CholmodDirect::analyse(const SparseMatrix& K) {
 bool CholmodDirect::factorize(const SparseMatrix& K) {
   if (!impl_->factor) analyse(K);
   cholmod_sparse A = Eigen::viewAsCholmod(K.selfadjointView<Eigen::Lower>());
-  const SmallFactorisationThreads threads(figures_.flops);
+  const auto threads = BlasThreadLimit::for_flops(figures_.flops);
   cholmod_factorize(&A, impl_->factor, &impl_->common);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)
     throw NumericalError("CHOLMOD ran out of memory factorising a " + std::to_string(K.rows()) + "-unknown matrix");
