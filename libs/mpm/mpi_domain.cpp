@@ -176,6 +176,10 @@ void MpiDomain::check_supported(const Settings& settings, const std::string& whe
     throw InputError(where, "contact",
                      "grid contact does not run on several MPI processes yet (its normals read the mass of a "
                      "node's neighbours, which a process holds only for its own blocks); run it on one process");
+  if (size_ > 1 && settings.null_space_filter != NullSpaceFilter::none)
+    throw InputError(where, "grid.null_space_filter",
+                     "does not run on several MPI processes (its projection is one solve over a whole body); "
+                     "run it on one process");
 }
 
 Real MpiDomain::reduce_max(Real local) const {

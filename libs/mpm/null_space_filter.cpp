@@ -122,8 +122,6 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
 }
 
 Real filter_deformation_gradients(SolverState& s, StepContext& c) {
-  if (c.domain.process_count() > 1)
-    throw InputError("", "null_space_filter", "runs on one process only (its projection is global over a body)");
   Particles& ps = s.particles;
   Real removed = 0;
   for (size_t body = 0; body < c.body_info.size(); ++body) {
@@ -170,6 +168,18 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
     }
   }
   return removed;
+}
+
+void null_space_filter_stage(SolverState& s, StepContext& c) {
+  const Settings& settings = c.settings;
+  if (settings.null_space_filter == NullSpaceFilter::none ||
+      (s.diagnostics.step + 1) % settings.null_space_filter_every != 0)
+    return;
+  // The strain energy the filter removes (or, where the grid-compatible F holds more, puts in)
+  // is a numerical change of the transfer's, booked with it.
+  const Real removed = filter_deformation_gradients(s, c);
+  c.sums.strain -= removed;
+  c.sums.transfer_dissipation += removed;
 }
 
 }  // namespace latmpm::mpm

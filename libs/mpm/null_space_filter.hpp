@@ -14,8 +14,9 @@
 // X(x) = Σ_I S_I(x) u_I with the run's own shape functions, so the filter takes
 //   F̃_p⁻¹ = Σ_I u_I ⊗ ∇S_Ip,  u = argmin Σ_p m_p |F_p⁻¹ − Σ_I u_I ⊗ ∇S_Ip|²,
 // i.e. K u = Gᵀ M F⁻¹ with K_IJ = Σ_p m_p ∇S_Ip·∇S_Jp (a mass-weighted Laplacian over the
-// body's nodes, one right-hand side per component of X), solved directly (sparse LDLᵀ; each
-// diagonal raised by 1e-9 of itself, which only fixes the constant that no gradient sees).
+// body's nodes, one right-hand side per component of X), solved directly (CHOLMOD's
+// supernodal Cholesky; each diagonal raised by 1e-9 of itself, which only fixes the constant
+// that no gradient sees).
 // What it removes is orthogonal (mass inner product) to every gradient of a grid field: the
 // part of F the nodal forces f_I = −Σ_p V_p σ_p ∇S_Ip see only through products of small
 // terms, point-to-point oscillating. What it keeps (tests/mpm/test_null_space_filter.cpp):
@@ -55,5 +56,10 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
 // F alone: the set-up refuses others). Returns the strain energy it removed (J; the energy
 // ledger books it with the transfer's loss).
 Real filter_deformation_gradients(SolverState& s, StepContext& c);
+
+// The step's last stage (step_scheme): the filter over every deformable body after every
+// `null_space_filter_every`-th step, its energy booked in the step's sums; nothing when the
+// settings' filter is none.
+void null_space_filter_stage(SolverState& s, StepContext& c);
 
 }  // namespace latmpm::mpm

@@ -8,7 +8,6 @@
 
 #include "mpm/cpdi_particles.hpp"
 #include "mpm/gimp_domains.hpp"
-#include "mpm/null_space_filter.hpp"
 #include "mpm/observers.hpp"
 #include "mpm/particle_fields.hpp"
 #include "mpm/step_stages.hpp"
@@ -259,13 +258,6 @@ void Simulation::advance(Real dt) {
   if (context_->refresh_needed) refresh_carried(state_, *context_);
   const Real stable = mpm::stable_time_step(state_, *context_);
   step_scheme(state_, *context_, dt);
-  if (settings_.null_space_filter != NullSpaceFilter::none &&
-      (state_.diagnostics.step + 1) % settings_.null_space_filter_every == 0) {
-    // The strain energy the filter removes is a numerical loss of the transfer, booked with it.
-    const Real removed = filter_deformation_gradients(state_, *context_);
-    context_->sums.strain -= removed;
-    context_->sums.transfer_dissipation += removed;
-  }
   finish_step(dt, stable);
 }
 

@@ -22,6 +22,7 @@
 #include "mpm/domain.hpp"
 #include "mpm/field_contact.hpp"
 #include "mpm/grid_update.hpp"
+#include "mpm/null_space_filter.hpp"
 #include "mpm/rigid_contact.hpp"
 #include "mpm/settings.hpp"
 #include "mpm/shape_functions.hpp"
@@ -496,18 +497,23 @@ void step_usf(SolverState& s, StepContext& c, Real dt) {
 }
 
 // One step of the settings' scheme with the settings' shape function, on the context's threads;
-// with grid contact, its step (field_contact.hpp).
+// with grid contact, its step (field_contact.hpp); then the null-space filter where the
+// settings ask for it (null_space_filter.hpp).
 inline void step_scheme(SolverState& s, StepContext& c, Real dt) {
   c.arena.execute([&] {
-    if (auto* fields = std::get_if<ContactFields>(&c.grid_fields)) return step_with_field_contact(s, c, *fields, dt);
-    with_solver_shape(c.settings, [&](auto shape) {
-      using Shape = decltype(shape);
-      switch (c.settings.scheme) {
-        case UpdateScheme::usl: step_usl<Shape>(s, c, dt); break;
-        case UpdateScheme::usf: step_usf<Shape>(s, c, dt); break;
-        case UpdateScheme::musl: step_musl<Shape>(s, c, dt); break;
-      }
-    });
+    if (auto* fields = std::get_if<ContactFields>(&c.grid_fields)) {
+      step_with_field_contact(s, c, *fields, dt);
+    } else {
+      with_solver_shape(c.settings, [&](auto shape) {
+        using Shape = decltype(shape);
+        switch (c.settings.scheme) {
+          case UpdateScheme::usl: step_usl<Shape>(s, c, dt); break;
+          case UpdateScheme::usf: step_usf<Shape>(s, c, dt); break;
+          case UpdateScheme::musl: step_musl<Shape>(s, c, dt); break;
+        }
+      });
+    }
+    null_space_filter_stage(s, c);
   });
 }
 

@@ -43,3 +43,12 @@ mpi "$processes" "${run[@]}" -o blocked 2> blocked.err || status=$?
 [ "$status" = 2 ] || { echo "rank 0 unable to write: exit $status, expected 2" >&2; cat blocked.err >&2; exit 1; }
 grep -q "blocked/snapshots: cannot create the snapshot directory" blocked.err
 echo "rank 0 unable to write its snapshots: all $processes processes stopped, exit 2"
+# What the MPI solver cannot do is refused at set-up, with exit 2 and the key named, before
+# any step: the null-space filter (one solve over a whole body).
+status=0
+mpi "$processes" "${run[@]}" --set grid.null_space_filter=deformation \
+  --set 'bodies.column.material={model="neo_hookean",E="10MPa",nu=0.4,density="1050kg/m^3"}' -o filtered 2> filtered.err || status=$?
+[ "$status" = 2 ] || { echo "null-space filter on $processes processes: exit $status, expected 2" >&2; cat filtered.err >&2; exit 1; }
+grep -q "grid.null_space_filter.*does not run on several MPI processes" filtered.err
+[ ! -e filtered/series.csv ] || { echo "the refused run wrote a series" >&2; exit 1; }
+echo "the null-space filter on $processes processes: refused at set-up, exit 2"
