@@ -26,7 +26,8 @@ ShapeFunctionKind parse_shape_function(const std::string& name, const std::strin
 // The CFL number a run takes unless it sets cfl or dt: per shape function, the largest of 0.3,
 // 0.5, 0.6 ... 1.0 up to which paper A's column (cell 0.4 mm; for uGIMP also the QUICK T2P30
 // lattice) finished with its load within 1 % of the run at 0.3, measured (docs/tradeoff.md,
-// "Time step"; pipelines/tradeoff/cfl-matrix.sh). The step is dt = cfl · h / max_p(c_p + |v_p|),
+// "Time step"; pipelines/tradeoff/cfl-matrix.sh); the B-splines' also on a metal lattice cell
+// (names.cpp). The step is dt = cfl · h / max_p(c_p + |v_p|),
 // adapted every step (Settings). Kept in the shape's row of the name table (names.cpp).
 double default_cfl(ShapeFunctionKind shape);
 

@@ -309,11 +309,15 @@ void Simulation::finish_step(Real dt, Real stable) {
   // Penalty springs compressed at the start (points placed inside a body) release energy
   // that no work put in: what they hold counts as available.
   const Real budget = std::max(carried.initial_energy + d.external_work + d.contact_energy, Real(0));
-  if (d.kinetic_energy > settings_.runaway_energy_factor * budget + settings_.runaway_energy_floor) {
+  const bool runaway = d.kinetic_energy > settings_.runaway_energy_factor * budget + settings_.runaway_energy_floor;
+  if (runaway || std::abs(d.energy_error) > settings_.energy_error_factor * budget + settings_.runaway_energy_floor) {
     std::ostringstream msg;
-    msg << "step " << d.step << " (t = " << d.time << " s): runaway kinetic energy " << d.kinetic_energy
-        << " J, more than " << settings_.runaway_energy_factor << " x the energy put in (" << budget
-        << " J); try a smaller cfl or time step";
+    msg << "step " << d.step << " (t = " << d.time << " s): ";
+    if (runaway)
+      msg << "runaway kinetic energy " << d.kinetic_energy << " J, more than " << settings_.runaway_energy_factor;
+    else
+      msg << "the energy balance is off by " << d.energy_error << " J, more than " << settings_.energy_error_factor;
+    msg << " x the energy put in (" << budget << " J); " << fastest_particle(state_, c) << "; try a smaller cfl or time step";
     throw NumericalError(msg.str());
   }
   for (const auto& observer : observers_) observer(*this, d);

@@ -202,6 +202,22 @@ Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body) {
   return m > 0 ? Vec3(Vec3(sum[0], sum[1], sum[2]) / m) : Vec3::Zero();
 }
 
+std::string fastest_particle(const SolverState& s, const StepContext& c) {
+  const Particles& ps = s.particles;
+  size_t fastest = ps.size();
+  for (size_t p = 0; p < ps.size(); ++p)
+    if (c.body_info[size_t(ps.body[p])].role == BodyRole::deformable &&
+        (fastest == ps.size() || ps.velocity[p].squaredNorm() > ps.velocity[fastest].squaredNorm()))
+      fastest = p;
+  if (fastest == ps.size()) return "no deformable particle here";
+  std::ostringstream msg;
+  msg.precision(6);
+  const auto& x = ps.position[fastest];
+  msg << "the fastest particle: " << ps.id[fastest] << " of body '" << c.bodies[size_t(ps.body[fastest])].name
+      << "' at (" << x[0] << ", " << x[1] << ", " << x[2] << ") m, " << ps.velocity[fastest].norm() << " m/s";
+  return msg.str();
+}
+
 Real energy_density(const SolverState& s, const StepContext& c, size_t p) {
   const Particles& ps = s.particles;
   const BodyInfo& body = c.body_info[size_t(ps.body[p])];

@@ -101,6 +101,31 @@ TEST_CASE("Kinetic energy beyond the energy put in stops the run", "[mpm][stabil
   CHECK_THAT(message_of<NumericalError>([&] { run(0.01); }), Catch::Matchers::Contains("runaway kinetic energy"));
 }
 
+TEST_CASE("An energy balance off by more than the energy put in stops the run", "[mpm][stability]") {
+  // The same plate and cube: with the default bound (10 × the energy put in) the run goes on;
+  // with a bound of 1e-3 × the energy put in, below the balance's own small error, the check
+  // fires, naming the balance and the fastest deformable particle, while the kinetic energy
+  // stays within its own bound (10 ×): it compares the balance, not the kinetic energy.
+  const Real h = 1e-3;
+  PointSet points = cube(h);
+  add_points(points, Eigen::Vector3d(0, 0, 4 * h), Eigen::Vector3d(4 * h, 4 * h, 5 * h), "plate");
+  auto run = [&](Real factor) {
+    Settings s = base_settings(h);
+    s.energy_error_factor = factor;
+    Simulation sim(points, {deformable("cube", rubber), rigid("plate", BodyRole::driven, Vec3(0, 0, -1), 1000)}, s);
+    for (int n = 0; n < 30; ++n) sim.step();
+    return sim.last_diagnostics();
+  };
+  const auto d = run(10);
+  // Something to compare: the driven plate's work and motion leave the balance a small error.
+  REQUIRE(std::abs(d.energy_error) > 1e-9);
+  const std::string msg = message_of<NumericalError>([&] { run(1e-3); });
+  INFO(msg);
+  CHECK_THAT(msg, Catch::Matchers::StartsWith("step ") && Catch::Matchers::Contains("the energy balance is off by") &&
+                      Catch::Matchers::Contains("the fastest particle: ") && Catch::Matchers::Contains("of body 'cube'") &&
+                      Catch::Matchers::Contains(") m, "));
+}
+
 TEST_CASE("Inconsistent scenes are refused with the field that is wrong", "[mpm][stability]") {
   const Real h = 1e-3;
   const PointSet points = cube(h);
