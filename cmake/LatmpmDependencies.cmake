@@ -50,8 +50,9 @@ find_path(GMSH_INCLUDE_DIR NAMES gmsh.h REQUIRED)
 latmpm_interface_target(gmsh ${GMSH_LIBRARY} ${GMSH_INCLUDE_DIR})
 
 # SuiteSparse CHOLMOD (libsuitesparse-dev) for the static solver's sparse Cholesky, called
-# through its C interface (libs/statics/cholmod_direct); Debian's SuiteSparse 5 ships no CMake
-# package.
+# through its C interface (libs/statics/cholmod_direct), and the explicit solver's null-space
+# filter (libs/mpm/null_space_filter, through Eigen's CholmodSupport); Debian's SuiteSparse 5
+# ships no CMake package.
 find_library(CHOLMOD_LIBRARY NAMES cholmod REQUIRED)
 find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 latmpm_interface_target(cholmod ${CHOLMOD_LIBRARY} ${CHOLMOD_INCLUDE_DIR})

@@ -3,9 +3,9 @@
 // sched_yield: on small factorisations (< 1e10 flops, e.g. every test problem, the QUICK
 // lattices, the explicit solver's null-space filter) that costs more system time than the
 // threads save (test_statics on the shared 2-core machine: 23 s system CPU with 2 BLAS
-// threads, 2 s with 1), and a run told to use one thread must not spin a second core.
-// Looked up at run time, so that any BLAS works (only OpenBLAS has the call; others are left
-// as they are).
+// threads, 2 s with 1). Larger factorisations keep the BLAS's own number, whatever thread
+// count the run was given (OPENBLAS_NUM_THREADS sets it). Looked up at run time, so that any
+// BLAS works (only OpenBLAS has the call; others are left as they are).
 #pragma once
 
 namespace latmpm {

@@ -62,8 +62,9 @@ class MpiDomain {
   MpiDomain();
   explicit MpiDomain(MPI_Comm communicator);
 
-  // InputError for what does not run on several processes yet (DDMP's node passes reach
-  // beyond a node; geometric rigid bodies sum over nodes in their own order).
+  // InputError for what does not run on several processes: DDMP (its node passes reach
+  // beyond a node), grid contact (its normals read neighbours' masses), the null-space filter
+  // (one solve over a whole body).
   void check_supported(const Settings& settings, const std::string& where) const;
   void migrate_particles(Particles& particles, Real cell_size);
   void share_grid(const SparseGrid& grid, const ParticleBuckets& buckets);

@@ -27,7 +27,7 @@ using name_table::parse_name;
 // The B-splines also on one elastic Ti-6Al-4V T2P30 cell pressed 2.8 mm and released (the
 // metal-lattice scene, bench/paper_b/lattice_set_study.sh's set-up): bspline2 at 0.8 and
 // bspline3 at 1.0 rang from step to step once the platen let go, the transfer booking 600 and
-// 1250 J of loss against 2.3 and 0.9 J of work; 0.7 and 0.9 closed their balance to 0.01 J.
+// 1250 J of loss against 2.3 and 0.9 J of work; 0.7 and 0.9 closed their balance to ≤ 0.013 J.
 constexpr std::array<std::tuple<ShapeFunctionKind, const char*, double>, 7> shape_names{{
     {ShapeFunctionKind::linear, "linear", 0.3},      // MUSL; at 0.5 the column's load moved 2.9 %, at 0.8 it failed
     {ShapeFunctionKind::ugimp, "ugimp", 0.5},        // column: 0.6 moved the load 66 %, 0.7 failed; lattice: 0.7 failed

@@ -2,6 +2,7 @@
 // the grid's fields, by a sparse direct solve of the normal equations.
 #include "mpm/null_space_filter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -65,13 +66,14 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   for (auto& row : tensors)
     for (int k = 0; k < 9; ++k) row[k] -= mean[k];
   // K = Gᵀ M G (its lower triangle: the factorisation reads no more) and the right-hand sides
-  // Gᵀ M T (column a: component a of X). K is summed from batches of points: a point adds up
-  // to 27 · 28 / 2 entries (uGIMP off the cell centres), so one list for all of a paper-size
-  // lattice's points held ~1 GB.
+  // Gᵀ M T (column a: component a of X). K is summed from batches of about 4M entries: a point
+  // adds up to N(N + 1)/2 of them for its N stencil nodes (uGIMP 378, bspline3 2080), so one
+  // list for all of a paper-size lattice's points held ~1 GB.
   Eigen::SparseMatrix<Real> K(nodes, nodes);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nodes, 3);
   std::vector<Eigen::Triplet<Real>> entries;
-  constexpr size_t batch = 8192;
+  const size_t stencil = first.size() > 1 ? std::max<size_t>(1, first[1] - first[0]) : 1;
+  const size_t batch = std::max<size_t>(1, (size_t(1) << 22) / (stencil * (stencil + 1) / 2));
   for (size_t start = 0; start < points.size(); start += batch) {
     entries.clear();
     for (size_t n = start; n < std::min(points.size(), start + batch); ++n) {
@@ -85,7 +87,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
     }
     Eigen::SparseMatrix<Real> part(nodes, nodes);
     part.setFromTriplets(entries.begin(), entries.end());
-    K = start == 0 ? part : Eigen::SparseMatrix<Real>(K + part);
+    K = start == 0 ? std::move(part) : Eigen::SparseMatrix<Real>(K + part);
   }
   entries = {};
   // K is singular (a constant has no gradient): 1e-9 of each node's own diagonal makes it
@@ -93,19 +95,27 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   // B-spline's support has a diagonal far below the others').
   for (int i = 0; i < nodes; ++i) K.coeffRef(i, i) *= 1 + 1e-9;
   // CHOLMOD's supernodal Cholesky (SuiteSparse): on a paper-size lattice (~1e5 nodes, up to
-  // 125 neighbours each) it factorises several times faster than a simplicial LDLᵀ. Ordered
-  // by AMD alone: CHOLMOD's default also tries METIS, which there took longer than the
-  // factorisation it saved (docs/solver.md, "Null-space filter").
+  // 125 neighbours each with uGIMP) it factorises several times faster than a simplicial
+  // LDLᵀ. Ordered by AMD alone: CHOLMOD's default also tries METIS, which there took longer
+  // than the factorisation it saved (docs/solver.md, "Null-space filter"). Its own printing is
+  // off: a failure is this function's one NumericalError, not CHOLMOD's warning beside it.
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Real>, Eigen::Lower> solver;
+  solver.cholmod().print = 0;
   solver.cholmod().nmethods = 1;
   solver.cholmod().method[0].ordering = CHOLMOD_AMD;
+  const auto failed = [&] {
+    return solver.info() != Eigen::Success || solver.cholmod().status != CHOLMOD_OK;
+  };
   solver.analyzePattern(K);
+  if (failed()) throw NumericalError("null-space filter: CHOLMOD could not order the grid's gradient system");
+  Eigen::MatrixXd u;  // column a: X_a at the nodes
   {
     const auto threads = BlasThreadLimit::for_flops(solver.cholmod().fl);
     solver.factorize(K);
+    if (failed()) throw NumericalError("null-space filter: the grid's gradient system did not factorise");
+    u = solver.solve(rhs);
+    if (failed()) throw NumericalError("null-space filter: CHOLMOD's solve failed");
   }
-  if (solver.info() != Eigen::Success) throw NumericalError("null-space filter: the grid's gradient system did not factorise");
-  const Eigen::MatrixXd u = solver.solve(rhs);  // column a: X_a at the nodes
   // Σ_p m_p T̃_p = Σ_p m_p T_p holds for the exact projection (here: the rest sums to zero);
   // the regularisation and round-off leave a difference, which a constant tensor (the
   // gradient of a linear field) removes; then the mean goes back.

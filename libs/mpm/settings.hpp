@@ -93,7 +93,7 @@ struct Settings {
   // energy_error_factor × the same energy put in, beyond the same floor: a step beyond its
   // stable size can ring from step to step with bounded kinetic energy while the transfer
   // books a loss many times the energy there is (B-splines at their former default CFL on a
-  // stiff metal lattice: 600 J booked of 2.3 J of work; docs/solver.md, "Time step").
+  // stiff metal lattice: 600 J booked of 2.3 J of work; docs/tradeoff.md, "Time step").
   Real energy_error_factor = 10;
   // A particle whose volume ratio J = det F falls to this or below is inverted or crushed
   // beyond anything an elastic solid survives (1 % of its volume): the run stops.

@@ -37,7 +37,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
     // (linear elastic's rate form, J2's be) would need their history filtered too.
     if (b.role == BodyRole::deformable && settings_.null_space_filter != NullSpaceFilter::none &&
         b.material.kind != MaterialKind::neo_hookean)
-      throw InputError(where, "null_space_filter",
+      throw InputError(where, "grid.null_space_filter",
                        "needs a material whose stress is a function of F alone (neo_hookean); body '" + name +
                            "' is " + to_string(b.material.kind));
     if (!b.velocity.allFinite()) throw InputError(where, "bodies." + name + ".velocity", "must be finite");
