@@ -79,6 +79,10 @@ struct StepContext {
   Reactions reactions;              // of the node update, per point body
   DdmpNodalValues ddmp_nodal;       // DDMP: σ^d, L and small-mass shares per node (ddmp_grid.hpp)
   Real ddmp_small_mass = -1;        // DDMP: below this a node's lanes go to its neighbours, kg (set on first use)
+  // The most the penalty springs have held in this process's run, J: the energy checks count
+  // it as put in, so that springs compressed at the start (points placed inside a body), once
+  // released, do not count against the balance (Simulation::finish_step).
+  Real peak_contact_energy = 0;
   // Penalty contact with rigid bodies (rigid_contact.hpp): off until a penalty body is added.
   bool penalty_contact = false;
   std::vector<ContactMaterial> contact_materials;  // per point body
