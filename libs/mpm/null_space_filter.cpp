@@ -72,7 +72,8 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   Eigen::SparseMatrix<Real> K(nodes, nodes);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nodes, 3);
   std::vector<Eigen::Triplet<Real>> entries;
-  const size_t stencil = first.size() > 1 ? std::max<size_t>(1, first[1] - first[0]) : 1;
+  size_t stencil = 1;  // the most nodes a point's gradients reach
+  for (size_t n = 0; n + 1 < first.size(); ++n) stencil = std::max<size_t>(stencil, first[n + 1] - first[n]);
   const size_t batch = std::max<size_t>(1, (size_t(1) << 22) / (stencil * (stencil + 1) / 2));
   for (size_t start = 0; start < points.size(); start += batch) {
     entries.clear();
