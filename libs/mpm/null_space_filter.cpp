@@ -24,6 +24,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   std::vector<uint32_t> first{0};
   std::vector<int> node;
   std::vector<Vec3> gradient;
+  size_t stencil = 1;  // the nodes a point's gradients can reach: N³
   with_shape_function(shape, [&](auto policy) {
     using Shape = decltype(policy);
     if constexpr (Shape::uses_domain_vertices) {
@@ -33,6 +34,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
       // (shape_ddmp.hpp); the filter takes the linear ones.
       using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
       constexpr int N = Weights::nodes_per_axis;
+      stencil = N * N * N;
       for (uint32_t p : points) {
         const auto st = make_stencil<Weights>(ps.position[p], stencil_half_size<Weights>(ps, p, h), 1 / h);
         for (int i = 0; i < N; ++i)
@@ -72,8 +74,6 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   Eigen::SparseMatrix<Real> K(nodes, nodes);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nodes, 3);
   std::vector<Eigen::Triplet<Real>> entries;
-  size_t stencil = 1;  // the most nodes a point's gradients reach
-  for (size_t n = 0; n + 1 < first.size(); ++n) stencil = std::max<size_t>(stencil, first[n + 1] - first[n]);
   const size_t batch = std::max<size_t>(1, (size_t(1) << 22) / (stencil * (stencil + 1) / 2));
   for (size_t start = 0; start < points.size(); start += batch) {
     entries.clear();
