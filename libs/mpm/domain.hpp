@@ -26,6 +26,8 @@
 //                      one-process particle order, on every process (contact_spread.hpp).
 //   reduce_sum/max/min the other global sums and extremes (speeds for the stable time
 //                      step, rigid couplings and contact, carried energies).
+//   text_of_largest    the words of the process holding the domain's extreme (the
+//                      fastest particle a stop names).
 //
 // For one process each does nothing, and a run's results do not depend on it. The MPI
 // domain (mpi_domain.hpp, a build with -DLATMPM_MPI=ON) keeps the particles' state
@@ -92,6 +94,9 @@ class SingleProcessDomain {
   }
   Real reduce_max(Real local) const { return local; }
   Real reduce_min(Real local) const { return local; }
+  // The `text` of the process whose `value` is the largest (the lowest rank of equals), on
+  // every process: a message naming one particle of the whole domain. Collective.
+  std::string text_of_largest(double, const std::string& text) const { return text; }
   DomainTraffic traffic() const { return {}; }
   // Returns once every process has called it (one process: at once).
   void barrier() const {}

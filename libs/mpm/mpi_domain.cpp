@@ -189,6 +189,20 @@ Real MpiDomain::reduce_max(Real local) const {
   return out;
 }
 
+std::string MpiDomain::text_of_largest(double value, const std::string& text) const {
+  if (!distributed()) return text;  // every process holds every particle: the same text
+  struct {
+    double value;
+    int rank;
+  } mine{value, rank_}, largest{};
+  check(MPI_Allreduce(&mine, &largest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_), "MPI_Allreduce");
+  uint64_t length = text.size();
+  check(MPI_Bcast(&length, 1, MPI_UINT64_T, largest.rank, comm_), "MPI_Bcast");
+  std::string out = largest.rank == rank_ ? text : std::string(size_t(length), '\0');
+  check(MPI_Bcast(out.data(), record_count(size_t(length)), MPI_CHAR, largest.rank, comm_), "MPI_Bcast");
+  return out;
+}
+
 void MpiDomain::barrier() const {
   if (size_ > 1) check(MPI_Barrier(comm_), "MPI_Barrier");
 }

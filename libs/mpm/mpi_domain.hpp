@@ -77,6 +77,7 @@ class MpiDomain {
   Real reduce_max(Real local) const;
   void barrier() const;
   Real reduce_min(Real local) const;
+  std::string text_of_largest(double value, const std::string& text) const;
   int process_count() const { return size_; }
   int rank() const { return rank_; }
   BucketPlacement bucket_placement(const ParticleBuckets& buckets, size_t particles) const;

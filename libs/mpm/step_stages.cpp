@@ -209,13 +209,19 @@ std::string fastest_particle(const SolverState& s, const StepContext& c) {
     if (c.body_info[size_t(ps.body[p])].role == BodyRole::deformable &&
         (fastest == ps.size() || ps.velocity[p].squaredNorm() > ps.velocity[fastest].squaredNorm()))
       fastest = p;
-  if (fastest == ps.size()) return "no deformable particle here";
-  std::ostringstream msg;
-  msg.precision(6);
-  const auto& x = ps.position[fastest];
-  msg << "the fastest particle: " << ps.id[fastest] << " of body '" << c.bodies[size_t(ps.body[fastest])].name
-      << "' at (" << x[0] << ", " << x[1] << ", " << x[2] << ") m, " << ps.velocity[fastest].norm() << " m/s";
-  return msg.str();
+  std::string mine = "no deformable particle";
+  double speed_sq = -1;  // below any particle's, so a process without one never names itself
+  if (fastest < ps.size()) {
+    std::ostringstream msg;
+    msg.precision(6);
+    const auto& x = ps.position[fastest];
+    speed_sq = double(ps.velocity[fastest].squaredNorm());
+    msg << "the fastest particle: " << ps.id[fastest] << " of body '" << c.bodies[size_t(ps.body[fastest])].name
+        << "' at (" << x[0] << ", " << x[1] << ", " << x[2] << ") m, " << ps.velocity[fastest].norm() << " m/s";
+    mine = msg.str();
+  }
+  // With several processes each holds its own particles: the one of the whole domain.
+  return c.domain.text_of_largest(speed_sq, mine);
 }
 
 Real energy_density(const SolverState& s, const StepContext& c, size_t p) {

@@ -142,9 +142,9 @@ Real ddmp_small_mass(const SolverState& s, StepContext& c);
 Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body);
 // ψ of deformable particle p (J/m³ of reference volume), with its history if its model has one.
 Real energy_density(const SolverState& s, const StepContext& c, size_t p);
-// "the fastest particle: ID of body 'NAME' at (x, y, z) m, v m/s" (deformable bodies; this
-// process's particles), for messages that stop a run whose trouble has no one particle of its
-// own (the energy checks).
+// "the fastest particle: ID of body 'NAME' at (x, y, z) m, v m/s" (deformable bodies, the
+// whole domain's: the same words on every process, collective), for messages that stop a run
+// whose trouble has no one particle of its own (the energy checks).
 std::string fastest_particle(const SolverState& s, const StepContext& c);
 // The carried state with speeds, energy and body centres from the particles as they are now:
 // at the start, and after a caller changed them through mutable_particles() before the
