@@ -8,8 +8,9 @@
 # Results in results/imperfections/{paper,quick}/: summary.md, metrics.csv, runs.csv, plots/,
 # curves/, run-<type>[-ddmp]/.
 # Chain: latmpm-lattice --preset T1P40 -> latmpm-voxelize -> latmpm-imperfect --type <X>
-# -> latmpm-solve pipelines/lattice-compression/lattice-platen.toml (a rigid plate driven onto
-# the deformable printed top plate, the base held) -> latmpm-post.
+# -> latmpm-solve pipelines/lattice-compression/lattice-rigid.toml (a rigid plate driven onto
+# the whole deformable printed top plate; the printed base omitted, a fixed half-space on its
+# upper face) -> latmpm-post.
 include pipelines/common.mk
 
 IP_SRC    := pipelines/imperfections
