@@ -31,6 +31,14 @@ struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A NumericalError that every process of a run raises at the same step, decided from sums
+// reduced over all of them (the energy checks): the processes can wait for each other before
+// they stop, so that rank 0's record of the stop (status.toml, the series) is whole before
+// an MPI_Abort ends the job. Any other NumericalError may be one process's alone.
+struct CollectiveNumericalError : NumericalError {
+  using NumericalError::NumericalError;
+};
+
 // An output could not be written (disk full, I/O error, a closed pipe): nothing partial is
 // left under the output's name. `where` names the file or option.
 struct OutputError : std::runtime_error {

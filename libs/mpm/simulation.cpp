@@ -320,7 +320,9 @@ void Simulation::finish_step(Real dt, Real stable) {
     else
       msg << "the energy balance is off by " << d.energy_error << " J, more than " << settings_.energy_error_factor;
     msg << " x the energy put in (" << budget << " J); " << fastest_particle(state_, c) << "; try a smaller cfl or time step";
-    throw NumericalError(msg.str());
+    // Every process takes this decision at the same step: the energies are sums reduced over
+    // all of them (keep it so: fastest_particle is collective, and solve_run waits for all).
+    throw CollectiveNumericalError(msg.str());
   }
   for (const auto& observer : observers_) observer(*this, d);
 }

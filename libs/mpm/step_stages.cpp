@@ -216,6 +216,7 @@ std::string fastest_particle(const SolverState& s, const StepContext& c) {
     msg.precision(6);
     const auto& x = ps.position[fastest];
     speed_sq = double(ps.velocity[fastest].squaredNorm());
+    if (!std::isfinite(speed_sq)) speed_sq = std::numeric_limits<double>::infinity();  // the one to name
     msg << "the fastest particle: " << ps.id[fastest] << " of body '" << c.bodies[size_t(ps.body[fastest])].name
         << "' at (" << x[0] << ", " << x[1] << ", " << x[2] << ") m, " << ps.velocity[fastest].norm() << " m/s";
     mine = msg.str();

@@ -387,6 +387,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     if (writer)
       write_run_status(run_dir, outcome(numerical ? "failed" : "error", numerical ? exit_numerical : exit_internal, reason),
                        provenance_);
+    // A stop every process raised together: the others wait until rank 0 has written the
+    // record above, so that the MPI_Abort that ends the job cannot cut it short.
+    if (several && dynamic_cast<const CollectiveNumericalError*>(&e) != nullptr) sim.domain().barrier();
     throw;
   }
 

@@ -33,7 +33,10 @@ window_load() {
     $1 >= at - half && $1 <= at + half { s += $2; n++ } END { if (n) printf "%.6g", s / n }' "$1"
 }
 # percent A B: 100 (A - B) / B to 2 significant digits, signed (empty if either is empty or B is 0).
-percent() { awk -v a="$1" -v b="$2" 'BEGIN { if (a != "" && b != "" && b + 0 != 0) printf "%+.2g", 100 * (a - b) / b }'; }
+percent() {
+  awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b + 0 == 0) exit
+    p = 100 * (a - b) / b; if (p >= 10 || p <= -10) printf "%+.0f", p; else printf "%+.2g", p }'
+}
 missing() { echo "**Not run**: \`results/$1/$mode/metrics.csv\` is missing (\`make $1${quick_flag}\`)."; }
 quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
 
@@ -107,7 +110,7 @@ quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
   echo "QUICK sizes) at a quarter, half, three quarters, seven eighths and all of the run's travel (paper"
   echo "sizes: 5, 10, 15, 17.5, 20 mm; the paper's $(paper imperfection_negligible_to) mm is three quarters of its 20 mm), each case's"
   echo "difference from the perfect (\`none\`) lattice's in per cent. Verdicts: *negligible* — every"
-  echo "difference up to three quarters of the travel within $(paper imperfection_band) (paper-values.csv, imperfection_band);"
+  echo "difference up to three quarters of the travel within $(awk -v b="$(paper imperfection_band)" 'BEGIN { print 100 * b }') % (paper-values.csv, imperfection_band);"
   echo "*after* — the sign of the difference over the last quarter's two points (paper: C +, D −)."
   echo
   m="results/imperfections/$mode/metrics.csv"
@@ -116,6 +119,8 @@ quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
     echo
     band=$(paper imperfection_band)
     travel=$(post_metric "$m" none travel 2>/dev/null || true)
+    # a finite, positive travel, else no table (awk passes "nan" and "inf" through)
+    travel=$(awk -v t="$travel" 'BEGIN { if (t ~ /^[0-9.eE+-]+$/ && t + 0 > 0) print t }')
     if [ -z "$travel" ]; then
       echo "(no \`none\` run: the differences need the perfect lattice)"
     else
@@ -132,12 +137,12 @@ quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
         i=0
         for u in $points; do
           i=$((i + 1))
-          f=$(window_load "$curves/$l.load_displacement.csv" "$u" "$half")
+          f=$(window_load "$curves/$l.load_displacement.csv" "$u" "$half" 2>/dev/null || true)
           f0=$(window_load "$curves/$ref.load_displacement.csv" "$u" "$half" 2>/dev/null || true)
           d=$(percent "$f" "$f0")
           row="$row $(num "$f") | $([ "$l" = "$ref" ] && echo "—" || echo "${d:+$d %}") |"
           if [ "$i" -le 3 ]; then worst=$(awk -v w="$worst" -v d="$d" 'BEGIN { if (d == "") { print w; exit } d = d + 0; if (d < 0) d = -d; if (w == "" || d > w + 0) w = d; print w }')
-          else after="$after$(awk -v d="$d" 'BEGIN { print (d > 0) ? "+" : (d < 0 ? "−" : "0") }')"; fi
+          else after="$after$(awk -v d="$d" 'BEGIN { if (d == "") print "?"; else print (d + 0 > 0) ? "+" : (d + 0 < 0 ? "−" : "0") }')"; fi
         done
         ok=$([ "$l" = "$ref" ] && echo "—" || awk -v w="$worst" -v b="$band" 'BEGIN { if (w != "") print (w <= 100 * b) ? "yes (" w " %)" : "no (" w " %)" }')
         echo "$row $(num "$(post_metric "$m" "$l" first_peak_load)") | ${ok:-not found} | $([ "$l" = "$ref" ] && echo "—" || echo "$after") |"
