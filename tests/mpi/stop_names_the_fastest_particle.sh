@@ -8,15 +8,9 @@
 set -euo pipefail
 bin_dir=$1 source_dir=$2 processes=$3 mpi_solve=${4:-} mpirun=${5:-}
 source "$(dirname "${BASH_SOURCE[0]}")/column_points.sh"
-scenes=$source_dir/pipelines/lattice-compression
-"$bin_dir/latmpm-lattice" --preset T1P20 --cells 2x2x2 --plates 2mm --quiet -o t1p20.h5
-"$bin_dir/latmpm-voxelize" t1p20.h5 --cell 1mm --ppc 2 --quiet -o t1p20-points.h5 2>/dev/null
-mapfile -t row < <(grep "^T1P20-E10 " "$scenes/cases-quick.txt" | tr ' ' '\n' | grep '=')
-base=$(sed -n 's/^\*.*\(rigid_bodies\.base\.point=[^ ]*\).*/\1/p' "$scenes/cases-quick.txt")
-[ ${#row[@]} -gt 0 ] && [ -n "$base" ] || { echo "no T1P20-E10 row in $scenes/cases-quick.txt" >&2; exit 1; }
-run=("$scenes/lattice-rigid.toml" --set points.0.file=t1p20-points.h5 --set grid.cell=1mm --set "$base")
-for word in "${row[@]}"; do run+=(--set "$word"); done
-run+=(--set time.cfl=0.5 --set run.max_steps=400 --set output.snapshot_every=100000 --quiet --threads 1)
+source "$source_dir/tests/support/quick_lattice_case.sh"
+quick_lattice_case "$bin_dir" "$source_dir" T1P20 .
+run=("${quick_case[@]}" --set time.cfl=0.5 --set run.max_steps=400 --set output.snapshot_every=100000 --quiet --threads 1)
 reason() { sed -n 's/^reason = //p' "$1/status.toml"; }
 status=0
 "$bin_dir/latmpm-solve" "${run[@]}" -o one 2> one.err || status=$?

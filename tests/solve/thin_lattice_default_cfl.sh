@@ -11,25 +11,18 @@ set -euo pipefail
 bin=$1 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-scenes=$src/pipelines/lattice-compression
+source "$src/tests/support/quick_lattice_case.sh"
 for preset in T1P20 T1P40; do
-  "$bin/latmpm-lattice" --preset "$preset" --cells 2x2x2 --plates 2mm --quiet -o "$work/$preset-geometry.h5"
-  "$bin/latmpm-voxelize" "$work/$preset-geometry.h5" --cell 1mm --ppc 2 --quiet -o "$work/$preset.h5" 2>/dev/null
-  # The planes of the experiment's own case row, so the scene is the one `make` runs.
-  mapfile -t planes < <(grep "^$preset-E10 " "$scenes/cases-quick.txt" | tr ' ' '\n' |
-                         grep -E '^(rigid_bodies\.platen\.point|bodies\.top_plate\.trim\.point)=')
-  base=$(sed -n 's/^\*.*\(rigid_bodies\.base\.point=[^ ]*\).*/\1/p' "$scenes/cases-quick.txt")
-  [ ${#planes[@]} -eq 2 ] && [ -n "$base" ] || { echo "no $preset-E10 row in $scenes/cases-quick.txt"; exit 1; }
+  quick_lattice_case "$bin" "$src" "$preset" "$work"
   for shape in ugimp cpgimp bspline2 bspline3 ddmp; do
-    if ! "$bin/latmpm-solve" "$scenes/lattice-rigid.toml" --set "points.0.file=$work/$preset.h5" \
-        --set grid.cell=1mm --set "grid.shape=$shape" --set bodies.lattice.material.E=10MPa \
-        --set bodies.top_plate.material.E=10MPa --set "$base" --set "${planes[0]}" --set "${planes[1]}" \
+    if ! "$bin/latmpm-solve" "${quick_case[@]}" --set "grid.shape=$shape" \
         --set run.max_steps=600 --set output.series_every=100 --set output.snapshot_every=100000 \
         --threads 1 --quiet -o "$work/run-$preset-$shape" 2> "$work/err"; then
       echo "$preset, $shape at its default cfl: $(tail -1 "$work/err")"
       exit 1
     fi
     grep -q 'status = "max_steps"' "$work/run-$preset-$shape/status.toml" || { echo "$preset, $shape: did not run 600 steps"; exit 1; }
+    grep -q "^shape = '$shape'" "$work/run-$preset-$shape/scene.toml" || { echo "$preset: the run was not $shape"; exit 1; }
     echo "$preset, $shape: 600 steps at the default cfl"
   done
 done
