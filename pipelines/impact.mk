@@ -1,6 +1,6 @@
 # make impact [QUICK=1]: paper A Sec. 6, a rigid flyer strikes a tetrahedral lattice.
-#   T2P30, E = 10 MPa, nu = 0.4, real density rho0 = 1050 kg/m^3, shape in {uGIMP, DDMP}
-#   (DDMP with USL, its default; DDMP=0 leaves it out),
+#   T1P20 ... T2P40 x E in {10, 100} MPa, nu = 0.4, real density rho0 = 1050 kg/m^3, shape in
+#   {uGIMP, DDMP} (DDMP with USL, its default; DDMP=0 leaves it out; QUICK: T2P30-E10 only),
 #   flyer 10 kg at 2 m/s, gravity 9.81 m/s^2 on flyer and lattice, bottom plate held,
 #   5x5x5 cells, 3 mm plates, cell 0.64 mm, 2 points per cell per direction, 25 ms.
 #   QUICK=1: 2x2x2 cells, 2 mm plates, cell 1 mm, 20 ms, and the flyer's mass scaled with the
@@ -13,7 +13,7 @@
 # `latmpm-solve --resume results/impact/.../run-<case>`).
 # The runs are the rows of pipelines/impact/cases-{paper,quick}.txt (the flyer's position is
 # in the rows); CASES=T2P30-E10 makes only the named cases.
-# Chain: latmpm-lattice --preset T2P30 -> latmpm-voxelize -> latmpm-solve
+# Chain: latmpm-lattice --preset <lattice> -> latmpm-voxelize -> latmpm-solve
 # pipelines/impact/impact.toml -> latmpm-post.
 include pipelines/common.mk
 
@@ -40,18 +40,18 @@ impact:
 impact-results: $(IM_OUT)/summary.md $(foreach r,$(IM_SELECTED),$(IM_OUT)/impact-$(call pipeline_field,$r,1).csv)
 	@echo "impact: results in $(IM_OUT)/summary.md and $(IM_OUT)/impact-*.csv"
 
-$(IM_OUT)/geometry.h5: | $(BIN)/latmpm-lattice
+$(IM_OUT)/geometry-%.h5: | $(BIN)/latmpm-lattice
 	@mkdir -p $(@D)
-	$(BIN)/latmpm-lattice --preset T2P30 --cells $(IM_CELLS) --plates $(IM_PLATES) --quiet -o $@
+	$(BIN)/latmpm-lattice --preset $* --cells $(IM_CELLS) --plates $(IM_PLATES) --quiet -o $@
 
-$(IM_OUT)/points.h5: $(IM_OUT)/geometry.h5 | $(BIN)/latmpm-voxelize
+$(IM_OUT)/points-%.h5: $(IM_OUT)/geometry-%.h5 | $(BIN)/latmpm-voxelize
 	$(BIN)/latmpm-voxelize $< --cell $(IM_CELL) --ppc 2 --quiet -o $@
 
 $(IM_OUT)/impact-%.csv: $(IM_OUT)/run-%/done $(IM_OUT)/summary.md $(IM_SRC)/extract.sh
 	bash $(IM_SRC)/extract.sh $(<D) $(IM_OUT)/curves/$*.load_time.csv $@
 
-$(eval $(call pipeline_post,$(IM_OUT),$(call pipeline_label_runs,$(IM_OUT),$(IM_SELECTED)),--kind impact,Impact of a rigid flyer on T2P30 (paper A Sec. 6),$(IM_SRC)/notes.md))
+$(eval $(call pipeline_post,$(IM_OUT),$(call pipeline_label_runs,$(IM_OUT),$(IM_SELECTED)),--kind impact,Impact of a rigid flyer on the six lattices (paper A Sec. 6),$(IM_SRC)/notes.md))
 
 $(IM_OUT)/summary.md: pipelines/impact.mk
 
-.PRECIOUS: $(IM_OUT)/geometry.h5 $(IM_OUT)/points.h5
+.PRECIOUS: $(IM_OUT)/geometry-%.h5 $(IM_OUT)/points-%.h5

@@ -39,6 +39,15 @@ percent() {
 }
 missing() { echo "**Not run**: \`results/$1/$mode/metrics.csv\` is missing (\`make $1${quick_flag}\`)."; }
 quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
+# speed_lost CASE T_REVERSAL: 1 - v(T/2) / v(0) from results/impact/MODE/impact-CASE.csv
+# (the row nearest T/2); empty without the curve or the reversal.
+speed_lost() {
+  local f="results/impact/$mode/impact-$1.csv"
+  [ -f "$f" ] && [ -n "$2" ] || return 0
+  awk -F, -v half="$2" 'NR == 1 { next } NR == 2 { v0 = $4 } { d = $1 - half / 2; if (d < 0) d = -d; if (best == "" || d < best) { best = d; v = $4 } }
+    END { if (v0 + 0 != 0 && best != "") printf "%.6g", 1 - v / v0 }' "$f"
+}
+pct() { awk -v a="$1" 'BEGIN { if (a != "") printf "%.0f %%", 100 * a }'; }
 
 {
   echo "# Paper A reproduced: the comparison ($mode sizes)"
@@ -164,12 +173,40 @@ quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
   if [ -f "$m" ]; then
     figure impact load_time
     echo
-    echo "| case | peak load (N) | at (ms) | reversal (ms) | in the paper's band | rebound (m/s) | energy balance error (largest, of the impact energy) | closes |"
-    echo "|---|---|---|---|---|---|---|---|"
+    echo "*Gradual*: the share of the flyer's impact speed lost by half the time to its reversal (a speed"
+    echo "that falls evenly loses about half by then, one that drops sharply at the end little)."
+    echo
+    echo "| case | peak load (N) | at (ms) | reversal (ms) | in the paper's band | speed lost by half the reversal | rebound (m/s) | energy balance error (largest, of the impact energy) | closes |"
+    echo "|---|---|---|---|---|---|---|---|---|"
     for l in $(labels "$m"); do
       t=$(post_metric "$m" "$l" reversal_time)
       e=$([ -f "$c" ] && post_metric "$c" "$l" impact_energy_error_worst || true)
-      echo "| $l | $(num "$(post_metric "$m" "$l" impact_peak_load)") | $(num "$(post_metric "$m" "$l" impact_peak_time)") | $(num "$t") | $(within "$t" "$(paper reversal_time_min)" "$(paper reversal_time_max)") | $(num "$(post_metric "$m" "$l" rebound_speed)") | $(num "$e") | $(within "$e" 0 "$(paper energy_balance_tolerance)") |"
+      echo "| $l | $(num "$(post_metric "$m" "$l" impact_peak_load)") | $(num "$(post_metric "$m" "$l" impact_peak_time)") | $(num "$t") | $(within "$t" "$(paper reversal_time_min)" "$(paper reversal_time_max)") | $(pct "$(speed_lost "$l" "$t")") | $(num "$(post_metric "$m" "$l" rebound_speed)") | $(num "$e") | $(within "$e" 0 "$(paper energy_balance_tolerance)") |"
+    done
+    echo
+    echo "The paper's orderings, case against case (peak load ratio; verdict: the paper's direction holds):"
+    echo "stiffer (E = 100 against 10 MPa) and thicker (t = 2.4 against 1.6 mm, T2 against T1) give a"
+    echo "lower peak load and a more gradual change of speed; DDMP's peaks higher and slightly earlier"
+    echo "than uGIMP's. A pair is listed when both of its runs are."
+    echo
+    echo "| pair | peak load ratio | lower peak | speed lost by half the reversal | more gradual | peak time difference (ms) |"
+    echo "|---|---|---|---|---|---|"
+    all=" $(labels "$m" | tr '\n' ' ')"
+    for l in $(labels "$m"); do
+      for pair in "$(echo "$l" | sed -n 's/-E10$/-E100/p') stiffer" "$(echo "$l" | sed -n 's/^T1\(P[0-9]*-E[0-9]*\)$/T2\1/p') thicker" "$(echo "$l" | sed -n 's/^\(T[12]P[0-9]*-E[0-9]*\)$/\1-ddmp/p') ddmp"; do
+        set -- $pair
+        [ $# -eq 2 ] && [[ "$all" == *" $1 "* ]] || continue
+        other=$1 kind=$2
+        p0=$(post_metric "$m" "$l" impact_peak_load) p1=$(post_metric "$m" "$other" impact_peak_load)
+        t0=$(post_metric "$m" "$l" impact_peak_time) t1=$(post_metric "$m" "$other" impact_peak_time)
+        s0=$(speed_lost "$l" "$(post_metric "$m" "$l" reversal_time)") s1=$(speed_lost "$other" "$(post_metric "$m" "$other" reversal_time)")
+        r=$(ratio "$p1" "$p0") dt=$(awk -v a="$t1" -v b="$t0" 'BEGIN { if (a != "" && b != "") printf "%+.3g", a - b }')
+        if [ "$kind" = ddmp ]; then
+          echo "| $other against $l | $r | $(awk -v r="$r" -v d="$dt" 'BEGIN { if (r != "" && d != "") print (r > 1 && d < 0) ? "higher and earlier: yes" : "higher and earlier: no" }') | $(pct "$s1") against $(pct "$s0") | | $dt |"
+        else
+          echo "| $other ($kind) against $l | $r | $(awk -v r="$r" 'BEGIN { if (r != "") print (r < 1) ? "yes" : "no" }') | $(pct "$s1") against $(pct "$s0") | $(awk -v a="$s1" -v b="$s0" 'BEGIN { if (a != "" && b != "") print (a > b) ? "yes" : "no" }') | $dt |"
+        fi
+      done
     done
   else
     missing impact
