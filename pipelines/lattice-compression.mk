@@ -1,7 +1,8 @@
 # make lattice-compression [QUICK=1]: paper A Sec. 5.2, six tetrahedral lattices compressed.
 #   T1P20 T1P30 T1P40 T2P20 T2P30 T2P40 x E in {8, 10} MPa x shape in {uGIMP, DDMP};
 #   5x5x5 cells, 3 mm printed plates, cell 0.64 mm, 2 points per cell per direction, nu = 0.4,
-#   rho = 6 rho0, a rigid plate driven down 20 mm at 100 mm/s. Plates (PLATES=rigid, the
+#   rho = 6 rho0, a rigid plate driven down 25 mm at 100 mm/s (past the experiments' densification
+#   onsets, 17 / 20 / 23 mm for phi = 20 / 30 / 40 deg). Plates (PLATES=rigid, the
 #   default; pipelines/lattice-compression/lattice-rigid.toml): the printed base omitted and a
 #   fixed half-space in its place, the printed top plate kept deformable in a one-cell slice
 #   under the rigid plate (docs/tradeoff.md, "Rigid plates": 2.3x fewer points, load within
