@@ -93,7 +93,10 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") printf "%.0f %%", 100 * a }'; }
   echo "buckling at ≈ $(paper buckling_onset) mm. Detection rule: latmpm-post's densification onset, the maximum of"
   echo "the energy efficiency ∫F du / (F H) (docs/post.md). The onsets are compared as strains (onset /"
   echo "lattice height), which do not depend on the number of cells; \"not reached\" where the run"
-  echo "ends before it."
+  echo "ends before it. In single-field MPM struts weld where their points share a grid node, about"
+  echo "a cell apart, so the onset depends on the cell (docs/tradeoff.md, \"Cell size at the paper's"
+  echo "lattice size\": a coarser cell densifies earlier); strut–strut contact (below) is what"
+  echo "separates them."
   echo
   m="results/lattice-compression/$mode/metrics.csv" curves="results/lattice-compression/$mode/curves"
   if [ -f "$m" ]; then
