@@ -1,7 +1,7 @@
 # make imperfections [QUICK=1]: paper A Sec. 5.3, printing imperfections of T1P40.
 #   T1P40 x {none, A, B, C, D} (latmpm-imperfect, 1.28 mm each) x shape in {uGIMP, DDMP};
 #   E = 10 MPa, otherwise as lattice-compression (5x5x5 cells, 3 mm plates, cell 0.64 mm,
-#   2 points per cell per direction, 20 mm travel at 100 mm/s).
+#   2 points per cell per direction; 20 mm travel at 100 mm/s, where lattice-compression has 25).
 #   QUICK=1: 2x2x2 cells, 2 mm plates, cell 1 mm, 4 mm travel.
 #   The runs are the rows of pipelines/imperfections/cases-{paper,quick}.txt (DDMP rows as in
 #   lattice-compression.mk); CASES="none A" makes only the named cases.

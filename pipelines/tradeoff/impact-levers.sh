@@ -4,12 +4,12 @@
 # the same with every position perturbed by 1e-9 (cell 1.000000001 mm), cfl 0.4, the base
 # omitted for a fixed half-space on its face, and both; then latmpm-post --kind impact
 # against the reference (OUT/post/summary.md, metrics.csv). Needs results/impact/quick/
-# points.h5 (make impact QUICK=1, or its points.h5 target). One solver thread each.
+# points-T2P30.h5 (make impact QUICK=1, or its points-T2P30.h5 target). One solver thread each.
 # usage: impact-levers.sh BIN_DIR OUT_DIR
 set -euo pipefail
 bin=$1 out=$2
-points=results/impact/quick/points.h5
-[ -f "$points" ] || { echo "impact-levers.sh: $points: missing (make results/impact/quick/points.h5 QUICK=1)" >&2; exit 2; }
+points=results/impact/quick/points-T2P30.h5
+[ -f "$points" ] || { echo "impact-levers.sh: $points: missing (make results/impact/quick/points-T2P30.h5 QUICK=1)" >&2; exit 2; }
 mkdir -p "$out"
 row=(--set "points.0.file=$points" --set grid.cell=1mm --set grid.shape=ugimp --set run.end.time=20ms
      --set rigid_bodies.flyer.mass=0.64kg --set output.series_every=20
