@@ -111,7 +111,7 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
       phi=$(echo "$l" | sed -n 's/^T[12]P\([0-9][0-9]\).*/\1/p')
       ps=$([ -n "$phi" ] && ratio "$(paper densification_onset_$phi)" "$(paper lattice_height_$phi)" || true)
       s=$(post_metric "$m" "$l" densification_strain)
-      echo "| $l | $(num "$(post_metric "$m" "$l" initial_stiffness)") | $(num "$(post_metric "$m" "$l" first_peak_load)") | $(num "$(post_metric "$m" "$l" first_peak_displacement)") | $(num "$(post_metric "$m" "$l" plateau_load)") | $(num "$(post_metric "$m" "$l" densification_displacement)") | ${s:+$(num "$s")}${s:-not reached} | $ps | $(ratio "$s" "$ps") |"
+      echo "| $l | $(num "$(post_metric "$m" "$l" initial_stiffness)") | $(num "$(post_metric "$m" "$l" first_peak_load)") | $(num "$(post_metric "$m" "$l" first_peak_displacement)") | $(num "$(post_metric "$m" "$l" plateau_load)") | $(num "$(post_metric "$m" "$l" densification_displacement)") | $(if [ -n "$s" ]; then num "$s"; else echo "not reached"; fi) | $ps | $(ratio "$s" "$ps") |"
     done
     # Pairs: E = 8 against 10 MPa (linear elasticity without inertia scales every load by 0.8
     # exactly, so the ratio's departure from 0.8 is the runs' dynamics), DDMP against uGIMP.
