@@ -37,6 +37,23 @@ percent() {
   awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || b + 0 == 0) exit
     p = 100 * (a - b) / b; if (p >= 10 || p <= -10) printf "%+.0f", p; else printf "%+.2g", p }'
 }
+# run_travel TABLE LABEL: the run's travel (mm) from a latmpm-post table when finite and
+# positive, else empty (awk passes "nan" and "inf" through).
+run_travel() {
+  local t
+  t=$(post_metric "$1" "$2" travel 2>/dev/null || true)
+  awk -v t="$t" 'BEGIN { if (t ~ /^[0-9.eE+-]+$/ && t + 0 > 0) print t }'
+}
+# of_travel TRAVEL P/Q...: the fractions P/Q of TRAVEL (the windows' half-width, the points
+# where loads are compared), "%.6g" each, space-separated.
+of_travel() {
+  local t=$1
+  shift
+  awk -v t="$t" -v f="$*" 'BEGIN { n = split(f, a, " ")
+    for (i = 1; i <= n; i++) { split(a[i], pq, "/"); printf "%s%.6g", (i > 1 ? " " : ""), pq[1] * t / pq[2] } }'
+}
+# ddmp_partner LABEL: the DDMP run of a uGIMP case label (empty for a DDMP label).
+ddmp_partner() { echo "$1" | sed -n 's/^\(T[12]P[0-9]*-E[0-9]*\)$/\1-ddmp/p'; }
 missing() { echo "**Not run**: \`results/$1/$mode/metrics.csv\` is missing (\`make $1${quick_flag}\`)."; }
 quick_flag=$([ "$mode" = quick ] && echo " QUICK=1" || true)
 # speed_lost CASE T_REVERSAL: the share of the flyer's impact speed v0 the lattice has taken
@@ -115,17 +132,16 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
     done
     # Pairs: E = 8 against 10 MPa (linear elasticity without inertia scales every load by 0.8
     # exactly, so the ratio's departure from 0.8 is the runs' dynamics), DDMP against uGIMP.
-    travel=$(post_metric "$m" "$(labels "$m" | head -1)" travel 2>/dev/null || true)
-    travel=$(awk -v t="$travel" 'BEGIN { if (t ~ /^[0-9.eE+-]+$/ && t + 0 > 0) print t }')
+    travel=$(run_travel "$m" "$(labels "$m" | head -1)")
     all=" $(labels "$m" | tr '\n' ' ')"
     if [ -n "$travel" ]; then
-      half=$(awk -v t="$travel" 'BEGIN { printf "%.6g", t / 80 }')
-      points=$(awk -v t="$travel" 'BEGIN { printf "%.6g %.6g %.6g %.6g", t / 4, t / 2, 3 * t / 4, t }')
+      half=$(of_travel "$travel" 1/80)
+      points=$(of_travel "$travel" 1/4 1/2 3/4 1/1)
       header="| pair | moduli ratio | initial stiffness ratio |" rule="|---|---|---|"
       for u in $points; do header="$header load ratio at $(num "$u") mm |"; rule="$rule---|"; done
       rows=""
       for l in $(labels "$m"); do
-        for other in "$(echo "$l" | sed -n 's/-E10\(-ddmp\)\{0,1\}$/-E8\1/p')" "$(echo "$l" | sed -n 's/^\(T[12]P[0-9]*-E[0-9]*\)$/\1-ddmp/p')"; do
+        for other in "$(echo "$l" | sed -n 's/-E10\(-ddmp\)\{0,1\}$/-E8\1/p')" "$(ddmp_partner "$l")"; do
           [ -n "$other" ] && [[ "$all" == *" $other "* ]] || continue
           # the ratio of the moduli in the two labels (1 for DDMP against uGIMP)
           moduli=$(ratio "$(echo "$other" | sed -n 's/.*-E\([0-9]*\).*/\1/p')" "$(echo "$l" | sed -n 's/.*-E\([0-9]*\).*/\1/p')")
@@ -168,14 +184,12 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
     figure imperfections load_displacement
     echo
     band=$(paper imperfection_band)
-    travel=$(post_metric "$m" none travel 2>/dev/null || true)
-    # a finite, positive travel, else no table (awk passes "nan" and "inf" through)
-    travel=$(awk -v t="$travel" 'BEGIN { if (t ~ /^[0-9.eE+-]+$/ && t + 0 > 0) print t }')
+    travel=$(run_travel "$m" none)
     if [ -z "$travel" ]; then
       echo "(no \`none\` run: the differences need the perfect lattice)"
     else
-      half=$(awk -v t="$travel" 'BEGIN { printf "%.6g", t / 80 }')
-      points=$(awk -v t="$travel" 'BEGIN { printf "%.6g %.6g %.6g %.6g %.6g", t / 4, t / 2, 3 * t / 4, 7 * t / 8, t }')
+      half=$(of_travel "$travel" 1/80)
+      points=$(of_travel "$travel" 1/4 1/2 3/4 7/8 1/1)
       header="| case |" rule="|---|"
       for u in $points; do header="$header load at $(num "$u") mm (N) | vs perfect |"; rule="$rule---|---|"; done
       echo "$header first peak (N) | negligible to $(num "$(awk -v t="$travel" 'BEGIN { print 3 * t / 4 }')") mm | after |"
@@ -220,10 +234,12 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
     echo
     echo "| case | peak load (N) | at (ms) | reversal (ms) | in the paper's band | speed taken by half the reversal | rebound (m/s) | energy balance error (largest, of the impact energy) | closes |"
     echo "|---|---|---|---|---|---|---|---|---|"
+    declare -A speed_share=()  # speed_lost of each case, read once from its curve
     for l in $(labels "$m"); do
       t=$(post_metric "$m" "$l" reversal_time)
       e=$([ -f "$c" ] && post_metric "$c" "$l" impact_energy_error_worst || true)
-      echo "| $l | $(num "$(post_metric "$m" "$l" impact_peak_load)") | $(num "$(post_metric "$m" "$l" impact_peak_time)") | $(num "$t") | $(within "$t" "$(paper reversal_time_min)" "$(paper reversal_time_max)") | $(pct "$(speed_lost "$l" "$t")") | $(num "$(post_metric "$m" "$l" rebound_speed)") | $(num "$e") | $(within "$e" 0 "$(paper energy_balance_tolerance)") |"
+      speed_share[$l]=$(speed_lost "$l" "$t")
+      echo "| $l | $(num "$(post_metric "$m" "$l" impact_peak_load)") | $(num "$(post_metric "$m" "$l" impact_peak_time)") | $(num "$t") | $(within "$t" "$(paper reversal_time_min)" "$(paper reversal_time_max)") | $(pct "${speed_share[$l]}") | $(num "$(post_metric "$m" "$l" rebound_speed)") | $(num "$e") | $(within "$e" 0 "$(paper energy_balance_tolerance)") |"
     done
     echo
     echo "The paper's orderings, case against case (peak load ratio; verdict: the paper's direction holds):"
@@ -236,12 +252,12 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
     echo "|---|---|---|---|---|---|"
     all=" $(labels "$m" | tr '\n' ' ')"
     for l in $(labels "$m"); do
-      for pair in "$(echo "$l" | sed -n 's/-E10\(-ddmp\)\{0,1\}$/-E100\1/p') stiffer" "$(echo "$l" | sed -n 's/^T1\(P[0-9]*-E[0-9]*\(-ddmp\)\{0,1\}\)$/T2\1/p') thicker" "$(echo "$l" | sed -n 's/^\(T[12]P[0-9]*-E[0-9]*\)$/\1-ddmp/p') ddmp"; do
+      for pair in "$(echo "$l" | sed -n 's/-E10\(-ddmp\)\{0,1\}$/-E100\1/p') stiffer" "$(echo "$l" | sed -n 's/^T1\(P[0-9]*-E[0-9]*\(-ddmp\)\{0,1\}\)$/T2\1/p') thicker" "$(ddmp_partner "$l") ddmp"; do
         read -r other kind <<< "$pair"
         [ -n "$kind" ] && [[ "$all" == *" $other "* ]] || continue
         p0=$(post_metric "$m" "$l" impact_peak_load) p1=$(post_metric "$m" "$other" impact_peak_load)
         t0=$(post_metric "$m" "$l" impact_peak_time) t1=$(post_metric "$m" "$other" impact_peak_time)
-        s0=$(speed_lost "$l" "$(post_metric "$m" "$l" reversal_time)") s1=$(speed_lost "$other" "$(post_metric "$m" "$other" reversal_time)")
+        s0=${speed_share[$l]} s1=${speed_share[$other]}
         r=$(ratio "$p1" "$p0") dt=$(awk -v a="$t1" -v b="$t0" 'BEGIN { if (a != "" && b != "") printf "%+.3g", a - b }')
         if [ "$kind" = ddmp ]; then
           echo "| $other against $l | $r | $(awk -v r="$r" -v d="$dt" 'BEGIN { if (r != "" && d != "") print (r > 1 && d < 0) ? "higher and earlier: yes" : "higher and earlier: no" }') | $(pct "$s1") against $(pct "$s0") | | $dt |"
