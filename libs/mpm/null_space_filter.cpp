@@ -11,6 +11,7 @@
 
 #include "core/blas_threads.hpp"
 #include "core/errors.hpp"
+#include "mpm/rigid_contact.hpp"
 #include "mpm/sparse_grid.hpp"
 #include "mpm/step_stages.hpp"
 
@@ -132,6 +133,14 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
     for (int k = 0; k < 9; ++k) row[k] += mean[k] - kept[k] / mass;
 }
 
+bool near_rigid_surface(const std::vector<RigidBodySettings>& bodies, const std::vector<RigidBodyState>& states,
+                        const Vec3& x, Real h) {
+  const Vec3 band = Vec3::Constant(rigid_surface_band_cells * h);
+  for (size_t k = 0; k < bodies.size(); ++k)
+    if (probe_contact(bodies[k], states[k].displacement, x, band).penetrates) return true;
+  return false;
+}
+
 Real filter_deformation_gradients(SolverState& s, StepContext& c) {
   Particles& ps = s.particles;
   Real removed = 0;
@@ -140,7 +149,9 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
     if (info.role != BodyRole::deformable) continue;
     std::vector<uint32_t> points;
     for (size_t p = 0; p < ps.size(); ++p)
-      if (size_t(ps.body[p]) == body) points.push_back(uint32_t(p));
+      if (size_t(ps.body[p]) == body &&
+          !near_rigid_surface(c.rigid_bodies, s.diagnostics.rigid, ps.position[p], c.settings.cell_size))
+        points.push_back(uint32_t(p));
     if (points.empty()) continue;
     PointValues values(points.size());  // F⁻¹ = ∂X/∂x, row a the gradient of X_a
     for (size_t n = 0; n < points.size(); ++n) {
