@@ -10,8 +10,8 @@
 # f_i against time), forces.png (f_i, f_t and f_a of the mu = 0.1 run, paper B Fig. 8), run-<case>/
 # (series.csv: load_driven = f_i, load_fixed = f_t, load_average = f_a, Eq. 14).
 # Chain: latmpm-hexmesh --cylinder -> latmpm-solve pipelines/shpb/shpb.toml -> latmpm-post.
-# Cost (measured, docs/paper-b.md "The paper-size table"): the paper table is 42 min of CPU
-# (B6 for 150 us: 8.6 min, B5: ~5 min each), ~25 min of wall with -j2 on an idle 2-core
+# Cost (measured, docs/paper-b.md "The paper-size table"): the paper table is 34 min of CPU
+# (B6 for 150 us: 6.7 min, B5: ~4 min each), ~25 min of wall with -j2 on an idle 2-core
 # machine; QUICK=1 ~30 s of CPU.
 include pipelines/common.mk
 
