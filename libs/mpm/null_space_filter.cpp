@@ -147,10 +147,22 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
   for (size_t body = 0; body < c.body_info.size(); ++body) {
     const BodyInfo& info = c.body_info[body];
     if (info.role != BodyRole::deformable) continue;
+    // The rigid bodies pressing this body now: a penalty body while any of its points touches
+    // it (the contact stage's attachment), a grid-coupled one always (its hold on the nodes is
+    // not tracked point by point). Released, a lattice is filtered whole, its joints included.
+    std::vector<char> touched(c.rigid_bodies.size(), 0);
+    if (!ps.contact_body.empty())
+      for (size_t p = 0; p < ps.size(); ++p)
+        if (size_t(ps.body[p]) == body && ps.contact_body[p] >= 0) touched[size_t(ps.contact_body[p])] = 1;
+    std::vector<RigidBodySettings> pressing;
+    std::vector<RigidBodyState> pressing_states;
+    for (size_t k = 0; k < c.rigid_bodies.size(); ++k)
+      if (touched[k] || c.rigid_bodies[k].coupling != RigidCoupling::penalty)
+        pressing.push_back(c.rigid_bodies[k]), pressing_states.push_back(s.diagnostics.rigid[k]);
     std::vector<uint32_t> points;
     for (size_t p = 0; p < ps.size(); ++p)
       if (size_t(ps.body[p]) == body &&
-          !near_rigid_surface(c.rigid_bodies, s.diagnostics.rigid, ps.position[p], c.settings.cell_size))
+          !near_rigid_surface(pressing, pressing_states, ps.position[p], c.settings.cell_size))
         points.push_back(uint32_t(p));
     if (points.empty()) continue;
     PointValues values(points.size());  // F⁻¹ = ∂X/∂x, row a the gradient of X_a
