@@ -133,12 +133,24 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
     for (int k = 0; k < 9; ++k) row[k] += mean[k] - kept[k] / mass;
 }
 
-bool near_rigid_surface(const std::vector<RigidBodySettings>& bodies, const std::vector<RigidBodyState>& states,
-                        const Vec3& x, Real h) {
-  const Vec3 band = Vec3::Constant(rigid_surface_band_cells * h);
-  for (size_t k = 0; k < bodies.size(); ++k)
-    if (probe_contact(bodies[k], states[k].displacement, x, band).penetrates) return true;
+bool rigid_body_presses(const RigidBodySettings& body, const RigidBodyState& state, size_t index,
+                        const Particles& ps, int32_t b, Real h) {
+  if (body.coupling == RigidCoupling::penalty) {
+    if (ps.contact_body.empty()) return false;
+    for (size_t p = 0; p < ps.size(); ++p)
+      if (ps.body[p] == b && ps.contact_body[p] == int32_t(index)) return true;
+    return false;
+  }
+  for (size_t p = 0; p < ps.size(); ++p)
+    if (ps.body[p] == b &&
+        probe_contact(body, state.displacement, ps.position[p], ps.half_size0[p].cast<Real>() + Vec3::Constant(h))
+            .penetrates)
+      return true;
   return false;
+}
+
+bool near_rigid_surface(const RigidBodySettings& body, const RigidBodyState& state, const Vec3& x, Real h) {
+  return probe_contact(body, state.displacement, x, Vec3::Constant(rigid_surface_band_cells * h)).penetrates;
 }
 
 Real filter_deformation_gradients(SolverState& s, StepContext& c) {
@@ -147,23 +159,18 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
   for (size_t body = 0; body < c.body_info.size(); ++body) {
     const BodyInfo& info = c.body_info[body];
     if (info.role != BodyRole::deformable) continue;
-    // The rigid bodies pressing this body now: a penalty body while any of its points touches
-    // it (the contact stage's attachment), a grid-coupled one always (its hold on the nodes is
-    // not tracked point by point). Released, a lattice is filtered whole, its joints included.
-    std::vector<char> touched(c.rigid_bodies.size(), 0);
-    if (!ps.contact_body.empty())
-      for (size_t p = 0; p < ps.size(); ++p)
-        if (size_t(ps.body[p]) == body && ps.contact_body[p] >= 0) touched[size_t(ps.contact_body[p])] = 1;
-    std::vector<RigidBodySettings> pressing;
-    std::vector<RigidBodyState> pressing_states;
+    const Real h = c.settings.cell_size;
+    std::vector<size_t> pressing;
     for (size_t k = 0; k < c.rigid_bodies.size(); ++k)
-      if (touched[k] || c.rigid_bodies[k].coupling != RigidCoupling::penalty)
-        pressing.push_back(c.rigid_bodies[k]), pressing_states.push_back(s.diagnostics.rigid[k]);
+      if (rigid_body_presses(c.rigid_bodies[k], s.diagnostics.rigid[k], k, ps, int32_t(body), h)) pressing.push_back(k);
     std::vector<uint32_t> points;
-    for (size_t p = 0; p < ps.size(); ++p)
-      if (size_t(ps.body[p]) == body &&
-          !near_rigid_surface(pressing, pressing_states, ps.position[p], c.settings.cell_size))
-        points.push_back(uint32_t(p));
+    for (size_t p = 0; p < ps.size(); ++p) {
+      if (size_t(ps.body[p]) != body) continue;
+      const bool banded = std::any_of(pressing.begin(), pressing.end(), [&](size_t k) {
+        return near_rigid_surface(c.rigid_bodies[k], s.diagnostics.rigid[k], ps.position[p], h);
+      });
+      if (!banded) points.push_back(uint32_t(p));
+    }
     if (points.empty()) continue;
     PointValues values(points.size());  // F⁻¹ = ∂X/∂x, row a the gradient of X_a
     for (size_t n = 0; n < points.size(); ++n) {

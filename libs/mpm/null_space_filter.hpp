@@ -53,27 +53,30 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
                                  Real h, PointValues& tensors);
 
 // Points whose surroundings within this many cells (a cube of half-width 1.5 h about the
-// point) reach into a rigid body that presses the body (a penalty body one of its points
-// touches; a grid-coupled body always) keep their F and are left out of the fit. Where a rigid
-// surface presses a body (a lattice's joints flattened on a platen) the parts that meet there
-// rotate apart within a cell; a grid field's gradient cannot turn that fast, so the projection
-// averages their F⁻¹, and an average of rotations is a strain: on the paper-size metal lattice
-// one pass took points next to the platen from J ≈ 1 to 0.37–2.5 and the run blew up after
-// ~6 mm of travel; with these points left out it ran its 12 mm and back and 350 µs at rest.
-// Left out also once the platen had let go, they kept their null-space strain (10.7 J of the
-// ~19 J the stresses give, in the top 1.5 mm) and that run blew up 190 µs into a longer rest,
-// at a joint 2.5 mm under the top; filtered once released, it ran through (docs/solver.md,
-// "Null-space filter"). 1.5 cells is the band measured; leaving out only the points that touch the
-// surface (the contact stage's) blew up at ~6 mm.
+// point) reach into a geometric rigid body (`rigid_bodies.*`) that presses the body keep
+// their F and stay out of the fit. Where a rigid surface presses a body (a lattice's joints
+// flattened on a platen) the parts that meet there rotate apart within a cell; a grid field's
+// gradient cannot turn that fast, so the projection would average their F⁻¹, and an average
+// of rotations is a strain: on the paper-size metal lattice one pass took points next to the
+// platen from J ≈ 1 to 0.37–2.5 and the run blew up at 6.9 mm. Once the surface lets go the
+// band is filtered again: kept out for good, it held its null-space strain and blew up later.
+// The band's width and the alternatives tried: docs/solver.md, "Null-space filter".
 inline constexpr Real rigid_surface_band_cells = 1.5;
 
-// True where the cube of half-width rigid_surface_band_cells · h about x reaches into one of
-// the rigid bodies (at their current displacements).
-bool near_rigid_surface(const std::vector<RigidBodySettings>& bodies, const std::vector<RigidBodyState>& states,
-                        const Vec3& x, Real h);
+// Whether `body` (rigid body number `index`, at the displacement of `state`) presses body `b`
+// of the particles now. A penalty body: while one of b's points touches it
+// (Particles::contact_body, the contact stage's attachment). A no-slip body, which acts
+// through the nodes within a cell of it: while one of b's point domains comes within a cell.
+bool rigid_body_presses(const RigidBodySettings& body, const RigidBodyState& state, size_t index,
+                        const Particles& ps, int32_t b, Real h);
+
+// True where the cube of half-width rigid_surface_band_cells · h about x reaches into `body`
+// at the displacement of `state`.
+bool near_rigid_surface(const RigidBodySettings& body, const RigidBodyState& state, const Vec3& x, Real h);
 
 // The filter over every deformable body of the state, body by body (a body's points only,
-// those near a rigid surface that presses it left out):
+// those near a rigid surface that presses it left out; the rigid bodies at their
+// displacements of the step's start):
 // F̃ written back, the stress taken again from it (materials whose stress is a function of
 // F alone: the set-up refuses others). Returns the strain energy it removed (J; the energy
 // ledger books it with the transfer's loss).
