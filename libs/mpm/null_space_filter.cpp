@@ -155,11 +155,11 @@ bool near_rigid_surface(const RigidBodySettings& body, const RigidBodyState& sta
 
 Real filter_deformation_gradients(SolverState& s, StepContext& c) {
   Particles& ps = s.particles;
+  const Real h = c.settings.cell_size;
   Real removed = 0;
   for (size_t body = 0; body < c.body_info.size(); ++body) {
     const BodyInfo& info = c.body_info[body];
     if (info.role != BodyRole::deformable) continue;
-    const Real h = c.settings.cell_size;
     std::vector<size_t> pressing;
     for (size_t k = 0; k < c.rigid_bodies.size(); ++k)
       if (rigid_body_presses(c.rigid_bodies[k], s.diagnostics.rigid[k], k, ps, int32_t(body), h)) pressing.push_back(k);
@@ -180,7 +180,7 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
         for (int b = 0; b < 3; ++b) values[n][3 * a + b] = inverse(a, b);
       removed += ps.volume0[p] * energy_density(s, c, p);
     }
-    project_onto_grid_gradients(ps, points, c.settings.shape_function, c.settings.cell_size, values);
+    project_onto_grid_gradients(ps, points, c.settings.shape_function, h, values);
     for (size_t n = 0; n < points.size(); ++n) {
       const uint32_t p = points[n];
       Mat3 inverse;
