@@ -43,8 +43,9 @@ constexpr std::array<std::tuple<ShapeFunctionKind, const char*, double>, 7> shap
 }};
 constexpr std::array<std::pair<UpdateScheme, const char*>, 3> scheme_names{{
     {UpdateScheme::usl, "usl"}, {UpdateScheme::usf, "usf"}, {UpdateScheme::musl, "musl"}}};
-constexpr std::array<std::pair<NullSpaceFilter, const char*>, 2> filter_names{{
-    {NullSpaceFilter::none, "none"}, {NullSpaceFilter::deformation, "deformation"}}};
+constexpr std::array<std::pair<NullSpaceFilter, const char*>, 3> filter_names{{
+    {NullSpaceFilter::none, "none"}, {NullSpaceFilter::deformation, "deformation"},
+    {NullSpaceFilter::reference_map, "reference_map"}}};
 constexpr std::array<std::pair<MaterialKind, const char*>, 3> material_names{{
     {MaterialKind::linear_elastic, "linear_elastic"}, {MaterialKind::neo_hookean, "neo_hookean"}, {MaterialKind::j2, "j2"}}};
 constexpr std::array<std::pair<BodyRole, const char*>, 3> role_names{{

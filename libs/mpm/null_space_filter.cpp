@@ -18,13 +18,16 @@
 namespace latmpm::mpm {
 
 void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t>& points, ShapeFunctionKind shape,
-                                 Real h, PointValues& tensors) {
-  // Per point its nodes and gradients ∇S_Ip (entries first[n] .. first[n + 1]); a node is
-  // keyed by the grid's own packing of three coordinates (SparseGrid::block_key).
+                                 Real h, PointValues& tensors, const std::vector<Vec3>* anchor) {
+  // Per point its nodes, gradients ∇S_Ip and (anchored) weights S_Ip (entries first[n] ..
+  // first[n + 1]); a node is keyed by the grid's own packing of three coordinates
+  // (SparseGrid::block_key). Without an anchor a node enters where the gradient is non-zero,
+  // with one where the weight is too.
   std::unordered_map<uint64_t, int> index;
   std::vector<uint32_t> first{0};
   std::vector<int> node;
   std::vector<Vec3> gradient;
+  std::vector<Real> weight;
   size_t stencil = 1;  // the nodes a point's gradients can reach: N³
   with_shape_function(shape, [&](auto policy) {
     using Shape = decltype(policy);
@@ -43,11 +46,13 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
             for (int k = 0; k < N; ++k) {
               const Vec3 g(st.dw[i][0] * st.w[j][1] * st.w[k][2], st.w[i][0] * st.dw[j][1] * st.w[k][2],
                            st.w[i][0] * st.w[j][1] * st.dw[k][2]);
-              if (!(g.squaredNorm() > 0)) continue;
+              const Real w = st.w[i][0] * st.w[j][1] * st.w[k][2];
+              if (!(g.squaredNorm() > 0) && !(anchor && w > 0)) continue;
               const auto it = index.try_emplace(
                   SparseGrid::block_key(st.base[0] + i, st.base[1] + j, st.base[2] + k), int(index.size())).first;
               node.push_back(it->second);
               gradient.push_back(g);
+              weight.push_back(w);
             }
         first.push_back(uint32_t(node.size()));
       }
@@ -68,6 +73,17 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   for (int k = 0; k < 9; ++k) mean[k] /= mass;
   for (auto& row : tensors)
     for (int k = 0; k < 9; ++k) row[k] -= mean[k];
+  // The anchors less the same linear field, A x_p with A the mean: what is left is fitted
+  // (a body at rest, X_p = x_p and F = I, leaves nothing and comes back to the last bit too).
+  std::vector<Vec3> values;
+  const Real anchor_weight = reference_map_weight / (h * h);
+  if (anchor) {
+    values.resize(points.size());
+    Mat3 a;
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) a(r, k) = mean[3 * r + k];
+    for (size_t n = 0; n < points.size(); ++n) values[n] = (*anchor)[n] - a * ps.position[points[n]];
+  }
   // K = Gᵀ M G (its lower triangle: the factorisation reads no more) and the right-hand sides
   // Gᵀ M T (column a: component a of X). K is summed from batches of about 4M entries: a point
   // adds up to N(N + 1)/2 of them for its N stencil nodes (uGIMP 378, bspline3 2080), so one
@@ -82,9 +98,14 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
       const Real m = ps.mass[points[n]];
       for (uint32_t e = first[n]; e < first[n + 1]; ++e) {
         for (uint32_t f = first[n]; f < first[n + 1]; ++f)
-          if (node[f] >= node[e]) entries.emplace_back(node[f], node[e], m * gradient[e].dot(gradient[f]));
+          if (node[f] >= node[e])
+            entries.emplace_back(node[f], node[e],
+                                 m * (gradient[e].dot(gradient[f]) +
+                                      (anchor ? anchor_weight * weight[e] * weight[f] : Real(0))));
         for (int a = 0; a < 3; ++a)
           rhs(node[e], a) += m * Vec3(tensors[n][3 * a], tensors[n][3 * a + 1], tensors[n][3 * a + 2]).dot(gradient[e]);
+        if (anchor)
+          for (int a = 0; a < 3; ++a) rhs(node[e], a) += m * anchor_weight * weight[e] * values[n][a];
       }
     }
     Eigen::SparseMatrix<Real> part(nodes, nodes);
@@ -120,7 +141,9 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
   }
   // Σ_p m_p T̃_p = Σ_p m_p T_p holds for the exact projection (here: the rest sums to zero);
   // the regularisation and round-off leave a difference, which a constant tensor (the
-  // gradient of a linear field) removes; then the mean goes back.
+  // gradient of a linear field) removes; then the mean goes back. Anchored, the mean is
+  // fitted too (a uniform drift of F from the positions is one to remove): only the mean goes
+  // back.
   std::array<Real, 9> kept{};
   for (size_t n = 0; n < points.size(); ++n) {
     tensors[n] = {};
@@ -130,7 +153,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
     for (int k = 0; k < 9; ++k) kept[k] += ps.mass[points[n]] * tensors[n][k];
   }
   for (auto& row : tensors)
-    for (int k = 0; k < 9; ++k) row[k] += mean[k] - kept[k] / mass;
+    for (int k = 0; k < 9; ++k) row[k] += mean[k] - (anchor ? Real(0) : kept[k] / mass);
 }
 
 bool rigid_body_presses(const RigidBodySettings& body, const RigidBodyState& state, size_t index,
@@ -180,7 +203,15 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
         for (int b = 0; b < 3; ++b) values[n][3 * a + b] = inverse(a, b);
       removed += ps.volume0[p] * energy_density(s, c, p);
     }
-    project_onto_grid_gradients(ps, points, c.settings.shape_function, h, values);
+    std::vector<Vec3> started;  // X_p of the listed points (reference_map)
+    if (c.settings.null_space_filter == NullSpaceFilter::reference_map) {
+      if (ps.reference_position.size() != ps.size())
+        throw NumericalError("null-space filter: the points' reference positions are missing (reference_map)");
+      started.reserve(points.size());
+      for (uint32_t p : points) started.push_back(ps.reference_position[p]);
+    }
+    project_onto_grid_gradients(ps, points, c.settings.shape_function, h, values,
+                                started.empty() ? nullptr : &started);
     for (size_t n = 0; n < points.size(); ++n) {
       const uint32_t p = points[n];
       Mat3 inverse;

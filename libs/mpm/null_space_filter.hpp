@@ -49,8 +49,22 @@ using PointValues = std::vector<std::array<Real, 9>>;
 // Replaces the tensors of `points` (indices into `ps`, one row each) by their projection onto
 // the gradients of the grid's fields: the shape function's own gradients at the points'
 // current positions (DDMP: its linear ones; CPDI1 refused, InputError), masses as weights.
+// With `anchor` (one value per listed point: where it started, X_p) the tensors are read as
+// F⁻¹ and the fitted field X(x) = Σ_I S_I(x) u_I is also asked to pass through the anchors:
+//   u = argmin Σ_p m_p (|F_p⁻¹ − Σ_I u_I ⊗ ∇S_Ip|² + reference_map_weight / h² |X_p − Σ_I S_Ip u_I|²),
+// so that the gradients returned are those of a map that sends the points back where they
+// started: a strain F lost (or gained) against the positions comes back (or goes).
 void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t>& points, ShapeFunctionKind shape,
-                                 Real h, PointValues& tensors);
+                                 Real h, PointValues& tensors, const std::vector<Vec3>* anchor = nullptr);
+
+// The weight of the reference map's values against its gradients (NullSpaceFilter::reference_map),
+// per cell: a mismatch of one cell in X counts as much as one of 1 in F⁻¹. So a pass follows
+// the anchors over distances beyond about a cell, where F and the positions disagree by a
+// drift, and leaves the within-cell detail to F. Why the anchor: on the paper-size elastic
+// metal lattice the F-only filter left F with a twentieth of the strain energy the positions
+// showed during unloading (11.6 against 183 J) and the released lattice 0.66 mm short, at
+// rest and stress-free (docs/paper-b.md, "The reference-map filter").
+inline constexpr Real reference_map_weight = 1;
 
 // Points whose surroundings within this many cells (a cube of half-width 1.5 h about the
 // point) reach into a geometric rigid body (`rigid_bodies.*`) that presses the body keep

@@ -49,6 +49,7 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"contact_anchor", true}, ps.contact_anchor, Vec3(Vec3::Zero()));
   visit(ParticleField{"cpdi_domain", true}, ps.cpdi_domain, CpdiParticleDomain(CpdiParticleDomain::Zero()));
   visit(ParticleField{"contact_field", true, false, FieldBound::byte}, ps.contact_field, uint8_t(0));
+  visit(ParticleField{"reference_position", true}, ps.reference_position, Vec3(Vec3::Zero()));
   for (auto& column : ps.history)
     visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
 }

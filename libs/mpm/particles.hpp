@@ -47,6 +47,9 @@ struct Particles {
   // Grid contact's velocity field of each point (field_contact.hpp), empty unless the run
   // has multi-field contact.
   std::vector<uint8_t> contact_field;
+  // Where each point started (X_p, m), empty unless the null-space filter anchors its fit to
+  // the reference map (NullSpaceFilter::reference_map).
+  std::vector<Vec3> reference_position;
   // Material history, one column per variable the run's models declare (material_history.hpp).
   std::vector<HistoryColumn> history;
 

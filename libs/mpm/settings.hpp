@@ -25,8 +25,10 @@ UpdateScheme default_scheme(ShapeFunctionKind shape);
 
 // What the step filters out of the particles' state after each gather (null_space_filter.hpp):
 // nothing, or the part of F in the null space of the particle-to-grid map (Gritton, Berzins &
-// Kirby 2017), which the grid can neither see nor unload.
-enum class NullSpaceFilter { none, deformation };
+// Kirby 2017), which the grid can neither see nor unload: `deformation` projects F⁻¹ alone onto
+// the gradients of the grid's fields; `reference_map` also anchors the fitted field to where
+// the points started, so F follows the positions back (a drift of F from them is removed too).
+enum class NullSpaceFilter { none, deformation, reference_map };
 std::string to_string(NullSpaceFilter filter);
 std::vector<std::string> null_space_filter_names();  // names.cpp
 NullSpaceFilter parse_null_space_filter(const std::string& name, const std::string& where = "",

@@ -131,6 +131,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
         throw InputError(where, "points", "point " + std::to_string(p) + " lies more than " +
                                               std::to_string(max_cell_coord) + " cells from the origin");
 
+  if (settings_.null_space_filter == NullSpaceFilter::reference_map)
+    state_.particles.reference_position = state_.particles.position;
   if (settings_.field_contact.enabled)  // points in field order: Particles::contact_field
     context_->grid_fields = make_contact_fields(settings_.field_contact, settings_.mass_scaling, points, bodies_,
                                                 state_.particles.contact_field, where);
