@@ -4,12 +4,14 @@
 For each run (its series.csv, snapshots and status.toml): the deepest platen travel u_max,
 the peak platen force, the travel u_release where the platen's force returns to zero on
 unloading (where the rising platen loses the lattice's top), the lattice's own height change
-dh at the end of the run (its first and last snapshots: the points that started in the top
+dh at rest (its first snapshot against those at rest: the points that started in the top
 layer less those of the bottom layer, lattice_height.py; the residual deformation, whether or
 not the platen still touches it, and whatever rigid lift the released lattice has), the
 residual strain -dh / H0 and the recovered share (u_max + dh) / u_max, the energies at the
-deepest point and at the end, and the cost. A run named by --must-recover (an elastic run
-without friction) must recover: its height change must lie within `--recover` (a fraction
+deepest point and at the end, and the cost. dh is the mean over the snapshots taken once the
+platen has stopped (the last one always among them): the released lattice rings in its first
+mode, and one snapshot's height is that mean plus a phase of the ringing. A run named by
+--must-recover (an elastic run without friction) must recover: its height change must lie within `--recover` (a fraction
 of u_max) of zero; the table says whether it does, and the script exits 1 when it does not.
 u_release is not the check: the platen, rising at the schedule's speed, leaves the top while
 the lattice still rises behind it (docs/paper-b.md, "The recovery check").
@@ -26,7 +28,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_status import read_status  # noqa: E402
-from lattice_height import final_height_change  # noqa: E402
+from lattice_height import rest_height_change  # noqa: E402
 
 
 def joules(value):
@@ -47,7 +49,10 @@ def analyse(run):
     # Unloading: the first row after the deepest point where the platen carries no force.
     release = next((i for i in range(deepest, len(rows)) if force[i] <= 1e-9 * peak), None)
     end = rows[-1]
-    height = final_height_change(run)
+    # At rest: from the last row where the platen still moved (its schedule has ended).
+    moving = [i for i in range(1, len(rows)) if travel[i] != travel[i - 1]]
+    rest_from = col(rows[moving[-1]], "time[s]") if moving else col(end, "time[s]")
+    height = rest_height_change(run, rest_from)
     if height is None:
         raise ValueError("fewer than two snapshots: no lattice height")
     # The height is the end's: the solver writes a snapshot at the last step (docs/scene.md).
@@ -60,7 +65,12 @@ def analyse(run):
         "peak_force_N": peak,
         "u_release_mm": travel[release] if release is not None else float("nan"),
         "released": release is not None,
-        "height_change_mm": height["change_m"] * 1e3,
+        "height_change_mm": height["mean_change_m"] * 1e3,
+        "height_change_end_mm": height["change_m"] * 1e3,
+        "height_change_min_mm": height["min_change_m"] * 1e3,
+        "height_change_max_mm": height["max_change_m"] * 1e3,
+        "rest_snapshots": height["rest_snapshots"],
+        "rest_from_us": height["rest_from_s"] * 1e6,
         "lift_mm": height["bottom_m"] * 1e3,
         "height_at_us": height["time_s"] * 1e6,
         "strain_energy_at_max_J": col(rows[deepest], "strain_energy[J]"),
@@ -114,14 +124,15 @@ def main():
         "# Load-unload: residual deformation (residual.py)", "",
         f"Lattice height H0 = {a.height:g} mm. u_release: the platen's travel where its force returns to "
         "zero on unloading (where the rising platen leaves the lattice's top). dh: the lattice's own height "
-        "change at the end of the run (the last snapshot: the mean rise of the points that started in its "
-        "top layer less that of its bottom layer; lift: the bottom layer's rise, the lattice flying off the "
-        "base); residual strain -dh / H0; recovered (u_max + dh) / u_max; the recovery check "
+        "change at rest (the mean rise of the points that started in its top layer less that of its bottom "
+        "layer, averaged over the snapshots taken after the platen stopped, the last one included: the "
+        "released lattice rings; their range and count beside it; lift: the bottom layer's rise at the end, "
+        "the lattice flying off the base); residual strain -dh / H0; recovered (u_max + dh) / u_max; the recovery check "
         f"(--must-recover): |dh| <= {a.recover:.0%} of u_max. Energies in J at the end unless said: "
         "blend and transfer are the FLIP/PIC blend's and the transfer's numerical dissipation "
         "(docs/solver.md, \"Energy\"), the energy error is `energy_error` against the work in. "
         "CPU = the solver's user + system time.", "",
-        "| case | u_max (mm) | peak force (N) | u_release (mm) | dh (mm), lift (mm) | residual strain | "
+        "| case | u_max (mm) | peak force (N) | u_release (mm) | dh at rest (mm) [range, snapshots], lift (mm) | residual strain | "
         "recovered | elastic energy at u_max (of the work) | plastic | friction | blend | transfer | "
         "elastic left | kinetic | energy error of the work | status, steps, CPU (s) |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
@@ -140,7 +151,8 @@ def main():
         lines.append(
             f"| {label} | {r['u_max_mm']:.3f} | {r['peak_force_N']:.0f} | "
             + (f"{r['u_release_mm']:.3f}" if r["released"] else "never released")
-            + f" | {dh:+.3f}, {r['lift_mm']:+.3f} | {-dh / a.height:.4f} | {rec:.1%}{verdict} | "
+            + f" | {dh:+.3f} [{r['height_change_min_mm']:+.3f} … {r['height_change_max_mm']:+.3f}, "
+            f"{r['rest_snapshots']}], {r['lift_mm']:+.3f} | {-dh / a.height:.4f} | {rec:.1%}{verdict} | "
             f"{r['strain_energy_at_max_J']:.3f} ({share:.1%}) | {r['plastic_end_J']:.3f} | {r['friction_end_J']:.3f} | "
             f"{r['blend_end_J']:.3f} | {joules(r['transfer_end_J'])} | "
             f"{r['strain_energy_end_J']:.3f} | {r['kinetic_end_J']:.3f} | "
