@@ -61,7 +61,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
 // per cell: a mismatch of one cell in X counts as much as one of 1 in F⁻¹. So a pass follows
 // the anchors over distances beyond about a cell, where F and the positions disagree by a
 // drift, and leaves the within-cell detail to F. Why the anchor: on the paper-size elastic
-// metal lattice the F-only filter left F with a twentieth of the strain energy the positions
+// metal lattice the F-only filter left F with a sixteenth of the strain energy the positions
 // showed during unloading (11.6 against 183 J) and the released lattice 0.66 mm short, at
 // rest and stress-free (docs/paper-b.md, "The reference-map filter").
 inline constexpr Real reference_map_weight = 1;

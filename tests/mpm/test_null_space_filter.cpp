@@ -162,10 +162,12 @@ TEST_CASE("A strain the grid cannot see stays in a free block without the null-s
   const NullSpaceFilter filter = GENERATE(NullSpaceFilter::deformation, NullSpaceFilter::reference_map);
   CAPTURE(to_string(filter));
   const auto [initial_on, on] = run(filter);
-  // Measured: with the filter 7.1 % is left as strain and motion (deformation; the first
-  // step's nodal forces come before the filter's first pass, which follows each step).
+  // Measured: with the filter 7.1 % is left as strain and motion (deformation; 8.3 % with
+  // reference_map: the first step's nodal forces come before the filter's first pass, which
+  // follows each step).
   CHECK(on.strain_energy + on.kinetic_energy < 0.1 * initial_on);
-  // The filter's loss, booked in transfer_dissipation, closes the balance (measured 0.48 %).
+  // The filter's loss, booked in transfer_dissipation, closes the balance (measured 0.48 %;
+  // reference_map 0.74 %).
   CHECK(std::abs(on.energy_error) < 0.01 * initial_on);
 }
 
@@ -216,14 +218,22 @@ TEST_CASE("The reference-map filter fits F to the points' start and keeps an F t
   const Real before = drift_left(values);
   project_onto_grid_gradients(ps, points, shape, h, values, &started);
   const Real once = drift_left(values);
-  for (int pass = 1; pass < 30; ++pass) project_onto_grid_gradients(ps, points, shape, h, values, &started);
-  const Real repeated = drift_left(values);
-  CAPTURE(before, once, repeated);
-  // Measured: 47 % left after one pass (50 % with bspline2), 1.7 % after 30 (24 %: the
-  // B-splines' nodes at the support's edge, of tiny weight, follow the anchors slowly).
+  for (int pass = 1; pass < 10; ++pass) project_onto_grid_gradients(ps, points, shape, h, values, &started);
+  const Real ten = drift_left(values);
+  for (int pass = 10; pass < 30; ++pass) project_onto_grid_gradients(ps, points, shape, h, values, &started);
+  const Real thirty = drift_left(values);
+  CAPTURE(before, once, ten, thirty);
+  // Measured: 47 % left after one pass (50 % with bspline2), 1.7 % after 30. B-spline 2
+  // stalls at 23–24 % after 10 passes: its nodes at the support's edge carry tiny weights
+  // against their gradients, so the anchors barely reach them.
   CHECK(once < 0.6 * before);
-  CHECK(repeated < 0.5 * once);
-  if (shape != ShapeFunctionKind::bspline2) CHECK(repeated < 0.05 * before);
+  CHECK(ten < once);
+  if (shape == ShapeFunctionKind::bspline2) {
+    CHECK(thirty < 0.5 * before);
+  } else {
+    CHECK(thirty < ten);
+    CHECK(thirty < 0.05 * before);
+  }
 }
 
 TEST_CASE("The null-space filter leaves the points next to a rigid surface that presses the body as the step made them",
