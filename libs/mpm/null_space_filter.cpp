@@ -221,9 +221,10 @@ Real filter_deformation_gradients(SolverState& s, StepContext& c) {
       const Real j = f.determinant();
       if (!(j > c.settings.min_jacobian) || !f.allFinite()) {
         std::ostringstream msg;
+        const Vec3& x = ps.position[p];
         msg << "step " << s.diagnostics.step + 1 << ": the null-space filter gives particle " << ps.id[p]
-            << " of body '" << c.bodies[body].name << "' J = " << j << " (<= " << c.settings.min_jacobian
-            << "); try a smaller cfl or time step";
+            << " of body '" << c.bodies[body].name << "' at (" << x[0] << ", " << x[1] << ", " << x[2]
+            << ") m J = " << j << " (<= " << c.settings.min_jacobian << "); try a smaller cfl or time step";
         throw NumericalError(msg.str());
       }
       ps.deformation[p] = f.cast<ParticleReal>();
