@@ -19,7 +19,7 @@ namespace latmpm::mpm {
 
 void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t>& points, ShapeFunctionKind shape,
                                  Real h, PointValues& tensors, const std::vector<Vec3>* anchor) {
-  // Per point its nodes, gradients ∇S_Ip and (anchored) weights S_Ip (entries first[n] ..
+  // Per point its nodes, gradients ∇S_Ip and (anchored only) weights S_Ip (entries first[n] ..
   // first[n + 1]); a node is keyed by the grid's own packing of three coordinates
   // (SparseGrid::block_key). Without an anchor a node enters where the gradient is non-zero,
   // with one where the weight is too.
@@ -52,7 +52,7 @@ void project_onto_grid_gradients(const Particles& ps, const std::vector<uint32_t
                   SparseGrid::block_key(st.base[0] + i, st.base[1] + j, st.base[2] + k), int(index.size())).first;
               node.push_back(it->second);
               gradient.push_back(g);
-              weight.push_back(w);
+              if (anchor) weight.push_back(w);
             }
         first.push_back(uint32_t(node.size()));
       }

@@ -53,37 +53,27 @@ def final_height_change(run):
     """The lattice's height change between a run's first and last snapshots: a dict with the
     last snapshot's time (s) and the layers' rises and height change (m); None without two
     snapshots."""
-    snaps = snapshots(run)
-    if len(snaps) < 2:
-        return None
-    x0 = dataset(snaps[0], "/particles/position", 3)
-    x = dataset(snaps[-1], "/particles/position", 3)
-    top, bottom = layers(x0)
-    up, down, change = height_change(x0, x, top, bottom)
-    return {"time_s": snapshot_time(snaps[-1]), "top_m": up, "bottom_m": down, "change_m": change,
-            "top_points": len(top), "bottom_points": len(bottom)}
+    return rest_height_change(run, float("inf"))
 
 
 def rest_height_change(run, rest_from_s):
     """The lattice's height change at rest: over the snapshots at or after `rest_from_s` (s; the
     last snapshot always counts), the mean of the height change and its range, with the last
-    snapshot's values (a dict as final_height_change's, plus mean_change_m, min_change_m,
-    max_change_m and rest_snapshots); None without two snapshots. A released lattice rings in
-    its first mode, so one snapshot's height is the mean plus a phase of that ringing."""
+    snapshot's values (its time, the layers' rises and height change, m; plus mean_change_m,
+    min_change_m, max_change_m, rest_snapshots and rest_from_s); None without two snapshots. A
+    released lattice rings in its first mode, so one snapshot's height is the mean plus a phase
+    of that ringing."""
     snaps = snapshots(run)
     if len(snaps) < 2:
         return None
     x0 = dataset(snaps[0], "/particles/position", 3)
     top, bottom = layers(x0)
-    times = [snapshot_time(s) for s in snaps[1:]]
-    chosen = [s for s, t in zip(snaps[1:], times) if t >= rest_from_s] or [snaps[-1]]
-    if chosen[-1] != snaps[-1]:
-        chosen.append(snaps[-1])
-    changes = [height_change(x0, dataset(s, "/particles/position", 3), top, bottom) for s in chosen]
+    timed = [(s, snapshot_time(s)) for s in snaps[1:]]
+    chosen = [(s, t) for s, t in timed[:-1] if t >= rest_from_s] + [timed[-1]]
+    changes = [height_change(x0, dataset(s, "/particles/position", 3), top, bottom) for s, _ in chosen]
     up, down, change = changes[-1]
     values = [c[2] for c in changes]
-    return {"time_s": snapshot_time(snaps[-1]), "top_m": up, "bottom_m": down, "change_m": change,
+    return {"time_s": timed[-1][1], "top_m": up, "bottom_m": down, "change_m": change,
             "top_points": len(top), "bottom_points": len(bottom), "mean_change_m": sum(values) / len(values),
             "min_change_m": min(values), "max_change_m": max(values), "rest_snapshots": len(values),
-            "rest_from_s": min(snapshot_time(s) for s in chosen)}
-
+            "rest_from_s": chosen[0][1]}
