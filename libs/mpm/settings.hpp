@@ -61,6 +61,10 @@ struct Settings {
   // deformable body) hands its mass, momentum and force on to its neighbours and reads its
   // velocity back from them (ddmp_grid.hpp, distribution coefficients).
   Real ddmp_small_mass_fraction = 0.01;  // in [0, 1)
+  // Fixed point bodies' nodes marked from a list made once, their points left out of the
+  // transfers (fixed_body_nodes.hpp; bit-identical). false: scattered every step, as before
+  // (the reference of test_mpm "Fixed bodies marked once*").
+  bool mark_fixed_bodies_once = true;
 
   // Time step: automatic, dt = cfl · h / max_p(c_p + |v_p|), c_p the dilatational wave
   // speed of the particle's material (at its current J), re-evaluated every step.

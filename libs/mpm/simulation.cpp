@@ -138,6 +138,12 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
                                                 state_.particles.contact_field, where);
   if (settings_.shape_function == ShapeFunctionKind::cpdi1)
     set_cpdi_domains(state_.particles, points, bodies_, settings_.cell_size, where);
+  // Fixed point bodies: their nodes marked once, their points out of the step, where that
+  // gives the same nodes (fixed_body_nodes.hpp says where not).
+  if (settings_.mark_fixed_bodies_once && !settings_.field_contact.enabled &&
+      settings_.shape_function != ShapeFunctionKind::cpdi1 && context_->domain.process_count() == 1)
+    for (size_t b = 0; b < bodies_.size(); ++b)
+      if (bodies_[b].role == BodyRole::fixed) context_->body_info[b].marked_once = context_->any_marked_once = true;
   if (settings_.shape_function == ShapeFunctionKind::cpgimp && settings_.scheme == UpdateScheme::usl)
     refuse_wide_cpgimp_domains(state_.particles, bodies_, settings_.cell_size, where);
 
@@ -153,6 +159,7 @@ Simulation::~Simulation() = default;
 
 Particles& Simulation::mutable_particles() {
   context_->refresh_needed = true;
+  context_->fixed_body_nodes.ready = false;  // the caller may move a fixed body's points
   state_.needs_sort = true;
   return state_.particles;
 }

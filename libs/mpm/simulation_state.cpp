@@ -265,6 +265,7 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   // Several processes: each keeps its share of the buckets, as they are (no re-sort).
   context_->domain.distribute_buckets(p, tables);
   state_.particles = std::move(p);
+  context_->fixed_body_nodes.ready = false;  // from the restored positions
   state_.buckets.restore(std::move(tables.buckets), std::move(tables.runs));
   state_.needs_sort = needs_sort;
   if (!state_.needs_sort) compute_boxes_from_positions(state_, *context_);

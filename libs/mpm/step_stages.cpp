@@ -23,13 +23,17 @@ void compute_boxes_from_positions(SolverState& s, StepContext& c) {
   tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
     Bucket& b = list[bi];
     std::array<int, 3> lo{max_cell_coord, max_cell_coord, max_cell_coord}, hi{-max_cell_coord, -max_cell_coord, -max_cell_coord};
-    for (uint32_t p = b.begin; p < b.end; ++p) {
-      const auto cell = cell_of(ps.position[p], inv_h);
-      for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
-      if (ParticleBuckets::within_drift(b, cell))
-        c.columns[bi].add_cell(b, cell);
-      else
-        outside_drift = true;
+    for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
+      const BodyRun& run = s.buckets.runs()[r];
+      if (c.body_info[size_t(run.body)].marked_once) continue;  // the step leaves them out
+      for (uint32_t p = run.begin; p < run.end; ++p) {
+        const auto cell = cell_of(ps.position[p], inv_h);
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], cell[a]), hi[a] = std::max(hi[a], cell[a]);
+        if (ParticleBuckets::within_drift(b, cell))
+          c.columns[bi].add_cell(b, cell);
+        else
+          outside_drift = true;
+      }
     }
     b.box_lo = lo;
     b.box_hi = hi;
@@ -49,9 +53,14 @@ void take_cell_ranges(SolverState& s, StepContext& c) {
     if (c.tallies[bi].drifted) s.needs_sort = true;
   }
   if (s.needs_sort) return;
-  // Buckets holding only rigid points of a fixed body have no tally cells; keep them valid.
-  for (size_t bi = 0; bi < list.size(); ++bi)
-    if (list[bi].box_lo[0] > list[bi].box_hi[0]) s.needs_sort = true;
+  // A bucket whose gather tracked no cell and that holds points the step moves: sort.
+  // (Buckets of a fixed body's points marked once have no cells and need none.)
+  for (size_t bi = 0; bi < list.size(); ++bi) {
+    const Bucket& b = list[bi];
+    if (b.box_lo[0] <= b.box_hi[0]) continue;
+    for (uint32_t r = b.run_begin; r < b.run_end; ++r)
+      if (!c.body_info[size_t(s.buckets.runs()[r].body)].marked_once) s.needs_sort = true;
+  }
 }
 
 namespace {

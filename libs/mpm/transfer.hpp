@@ -36,6 +36,9 @@ struct BodyInfo {
   // points' centroid (the held face's outward normal), zero when that is undefined.
   Vec3 hold_outward = Vec3::Zero();
   bool hold_slip = false;  // held nodes keep their velocity along the face (BodySettings::hold_slip)
+  // A fixed body whose nodes are marked from a list made once (fixed_body_nodes.hpp): the
+  // transfers leave its points out.
+  bool marked_once = false;
 };
 
 // Which node lanes a particles-to-grid pass fills.
@@ -151,7 +154,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
   for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
-    if (rigid && !Mode::constraint) continue;
+    if (rigid && (!Mode::constraint || bodies[run.body].marked_once)) continue;
     if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
     // The stencils of up to eight points first: independent computations the CPU overlaps,
     // instead of each one's latency ahead of its point's scatter.
@@ -408,6 +411,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
     const BodyInfo& body = bodies[run.body];
     RunTally& rt = run_tally[run_index - b.run_begin];
     rt = RunTally{};
+    if (body.marked_once) continue;  // at rest, zero velocity: nothing to gather
     if (body.role != BodyRole::deformable) {
       // Rigid points move with their prescribed velocity; F and σ stay as they are.
       for (uint32_t p = run.begin; p < run.end; ++p) {

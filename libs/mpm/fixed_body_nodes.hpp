@@ -1,0 +1,87 @@
+// The grid nodes of fixed point bodies, found once (issue 14: "model only what the scene
+// requires"). A fixed body's points never move and carry no mass to the grid: all they do in
+// a step is mark the nodes their stencils reach with the body's constraint (transfer.hpp).
+// Those nodes do not change, so the step leaves the points out of its transfers and writes
+// the marks from this list after each grid clear instead. A printed base plate held under a
+// lattice is 30 % of paper A's impact points (docs/tradeoff.md, "Fixed bodies marked once").
+//
+// The same nodes, the same marks: the list is built with the weights the scatter uses (the
+// shape's own stencil, DDMP's linear corner weights) and a node is marked where the product
+// of its three weights is positive, as scatter_bucket does; the mark is the largest body
+// index + 1 of the bodies touching the node, as the scatter's max gives. Marks on blocks no
+// moving point reaches are dropped: those nodes get no mass, momentum or force, so their
+// constraint changes nothing. Results are bit-identical to the points scattered every step
+// (test_mpm "Fixed bodies marked once*").
+//
+// Not used (the points stay in the step) with several processes (a node a process holds
+// may be reached only by another's fixed points), with grid contact's fields, and with CPDI1
+// (whose stencils are its domain's).
+#pragma once
+#include <algorithm>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "mpm/particles.hpp"
+#include "mpm/shape_linear.hpp"
+#include "mpm/sparse_grid.hpp"
+#include "mpm/stencil.hpp"
+#include "mpm/transfer.hpp"
+
+namespace latmpm::mpm {
+
+struct FixedBodyNodes {
+  struct Block {
+    SparseGrid::Coord coord;                    // block coordinates
+    std::vector<std::pair<int, Real>> marks;    // node offset in the block (Reals), marker
+  };
+  std::vector<Block> blocks;  // in block-key order
+  bool ready = false;         // built for the particles' current positions
+};
+
+// The nodes the points of bodies with BodyInfo::marked_once reach, with their markers.
+template <class Shape>
+FixedBodyNodes find_fixed_body_nodes(const Particles& ps, const std::vector<BodyInfo>& bodies, Real h) {
+  // The weights the scatter marks with: DDMP's are the linear hat's (shape_ddmp.hpp).
+  using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
+  constexpr int N = Weights::nodes_per_axis;
+  constexpr int bw = SparseGrid::block_width;
+  std::map<uint64_t, std::map<int, Real>> marks;  // block key → node offset → marker
+  for (size_t p = 0; p < ps.size(); ++p) {
+    const int32_t body = ps.body[p];
+    if (!bodies[size_t(body)].marked_once) continue;
+    const Real marker = Real(body + 1);
+    const auto st = make_stencil<Weights>(ps.position[p], stencil_half_size<Weights>(ps, p, h), 1 / h);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        for (int k = 0; k < N; ++k) {
+          if (!(st.w[i][0] * st.w[j][1] * st.w[k][2] > 0)) continue;
+          const int n[3] = {st.base[0] + i, st.base[1] + j, st.base[2] + k};
+          const int b[3] = {floor_div(n[0], bw), floor_div(n[1], bw), floor_div(n[2], bw)};
+          Real& m = marks[SparseGrid::block_key(b[0], b[1], b[2])]
+                         [SparseGrid::node_offset(n[0] - bw * b[0], n[1] - bw * b[1], n[2] - bw * b[2])];
+          m = std::max(m, marker);
+        }
+  }
+  FixedBodyNodes out;
+  out.blocks.reserve(marks.size());
+  for (const auto& [key, nodes] : marks) {
+    FixedBodyNodes::Block block{SparseGrid::key_to_coord(key), {nodes.begin(), nodes.end()}};
+    out.blocks.push_back(std::move(block));
+  }
+  out.ready = true;
+  return out;
+}
+
+// Writes the marks into the constraint lane of the active grid (after it was cleared).
+inline void mark_fixed_body_nodes(const FixedBodyNodes& nodes, SparseGrid& grid) {
+  for (const FixedBodyNodes::Block& b : nodes.blocks) {
+    const int index = grid.find(b.coord[0], b.coord[1], b.coord[2]);
+    if (index < 0) continue;  // no moving point reaches it this step
+    Real* block = grid.block(size_t(index));
+    for (const auto& [offset, marker] : b.marks)
+      block[offset + lane::constraint] = std::max(block[offset + lane::constraint], marker);
+  }
+}
+
+}  // namespace latmpm::mpm
