@@ -2,8 +2,9 @@
 // requires"). A fixed body's points never move and carry no mass to the grid: all they do in
 // a step is mark the nodes their stencils reach with the body's constraint (transfer.hpp).
 // Those nodes do not change, so the step leaves the points out of its transfers and writes
-// the marks from this list after each grid clear instead. A printed base plate held under a
-// lattice is 30 % of paper A's impact points (docs/tradeoff.md, "Fixed bodies marked once").
+// the marks from this list after each grid clear instead. The printed base plate under paper
+// A's impact lattice, a fixed body, is 30 % of its points (docs/tradeoff.md, "Fixed bodies
+// marked once").
 //
 // The same nodes, the same marks: the list is built with the weights the scatter uses (the
 // shape's own stencil, DDMP's linear corner weights) and a node is marked where the product
@@ -18,7 +19,9 @@
 // (whose stencils are its domain's).
 #pragma once
 #include <algorithm>
-#include <map>
+#include <cstdint>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -46,7 +49,7 @@ FixedBodyNodes find_fixed_body_nodes(const Particles& ps, const std::vector<Body
   using Weights = std::conditional_t<Shape::smoothed_gradient, LinearShape, Shape>;
   constexpr int N = Weights::nodes_per_axis;
   constexpr int bw = SparseGrid::block_width;
-  std::map<uint64_t, std::map<int, Real>> marks;  // block key → node offset → marker
+  std::vector<std::tuple<uint64_t, int, Real>> marks;  // block key, node offset, marker
   for (size_t p = 0; p < ps.size(); ++p) {
     const int32_t body = ps.body[p];
     if (!bodies[size_t(body)].marked_once) continue;
@@ -58,22 +61,39 @@ FixedBodyNodes find_fixed_body_nodes(const Particles& ps, const std::vector<Body
           if (!(st.w[i][0] * st.w[j][1] * st.w[k][2] > 0)) continue;
           const int n[3] = {st.base[0] + i, st.base[1] + j, st.base[2] + k};
           const int b[3] = {floor_div(n[0], bw), floor_div(n[1], bw), floor_div(n[2], bw)};
-          Real& m = marks[SparseGrid::block_key(b[0], b[1], b[2])]
-                         [SparseGrid::node_offset(n[0] - bw * b[0], n[1] - bw * b[1], n[2] - bw * b[2])];
-          m = std::max(m, marker);
+          marks.emplace_back(SparseGrid::block_key(b[0], b[1], b[2]),
+                             SparseGrid::node_offset(n[0] - bw * b[0], n[1] - bw * b[1], n[2] - bw * b[2]), marker);
         }
   }
+  // Sorted by node, then marker: a node's last entry holds its largest marker.
+  std::sort(marks.begin(), marks.end());
   FixedBodyNodes out;
-  out.blocks.reserve(marks.size());
-  for (const auto& [key, nodes] : marks) {
-    FixedBodyNodes::Block block{SparseGrid::key_to_coord(key), {nodes.begin(), nodes.end()}};
-    out.blocks.push_back(std::move(block));
+  for (size_t e = 0; e < marks.size(); ++e) {
+    const auto& [key, offset, marker] = marks[e];
+    if (e + 1 < marks.size() && std::get<0>(marks[e + 1]) == key && std::get<1>(marks[e + 1]) == offset) continue;
+    if (out.blocks.empty() || SparseGrid::block_key(out.blocks.back().coord[0], out.blocks.back().coord[1],
+                                                    out.blocks.back().coord[2]) != key)
+      out.blocks.push_back({SparseGrid::key_to_coord(key), {}});
+    out.blocks.back().marks.emplace_back(offset, marker);
   }
   out.ready = true;
   return out;
 }
 
-// Writes the marks into the constraint lane of the active grid (after it was cleared).
+// The fixed bodies' points as the step left them before they were taken out of it: at their
+// body's velocity (zero), their positions + 0 (so a −0 coordinate reads +0). A caller may have
+// set other values through Simulation::mutable_particles(); the gather no longer resets them.
+inline void rest_fixed_body_points(Particles& ps, const std::vector<BodyInfo>& bodies) {
+  for (size_t p = 0; p < ps.size(); ++p) {
+    const BodyInfo& body = bodies[size_t(ps.body[p])];
+    if (!body.marked_once) continue;
+    ps.velocity[p] = body.velocity.template cast<ParticleReal>();
+    ps.position[p] += Vec3::Zero();
+  }
+}
+
+// Writes the marks into the constraint lane of the active grid (after it was cleared). Serial:
+// a paper-size base plate's list is ~1,500 blocks, far below a step's other passes.
 inline void mark_fixed_body_nodes(const FixedBodyNodes& nodes, SparseGrid& grid) {
   for (const FixedBodyNodes::Block& b : nodes.blocks) {
     const int index = grid.find(b.coord[0], b.coord[1], b.coord[2]);

@@ -95,6 +95,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
       if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
       buffer.grid = &s.grid;
       for (uint32_t p = b.begin; p < b.end; ++p) {
+        if (c.body_info[size_t(copy.body[p])].marked_once) continue;  // out of the step: their nodes are outside the box
         const auto st = particle_stencil<Shape>(copy, p, h, buffer);
         Vec3 v = Vec3::Zero();
         Mat3 grad = Mat3::Zero();
