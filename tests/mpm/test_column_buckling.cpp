@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "mpm/simulation.hpp"
 #include "point_builders.hpp"
@@ -83,4 +84,41 @@ TEST_CASE("An imperfect clamped column carries a peak load near the Euler load",
     if (sim.particles().body[p] == 0 && std::abs(sim.particles().position[p][2] - L / 2) < h)
       mid_shift += sim.particles().position[p][0] - points.position[sim.particles().id[p]][0], ++mid_count;
   CHECK(std::abs(mid_shift / mid_count) > a);
+}
+
+// DDMP against uGIMP on the buckled column with a round and with a square section of the same
+// width (hidden: ~2 min of CPU; docs/solver.md, "DDMP column"): whether the stair-stepped
+// round surface is where DDMP's post-buckling softness comes from. t = 1.6 mm, L = 16 mm,
+// a = 0.02 L, h = 0.4 mm (4 cells across), ν = 0.4, ρ = 6 ρ0, 100 mm/s, 3 mm of travel;
+// plateau = the driven plate's mean load over the last quarter.
+TEST_CASE("Buckled column plateau, round against square section", "[.][column-section-study]") {
+  const Real t = 1.6e-3, L = 16e-3, E = 10e6, nu = 0.4, rho = 6300, speed = 0.1, a = 0.02 * L, h = 0.4e-3;
+  const Real r = t / 2, travel = 3e-3;
+  for (bool square : {false, true})
+    for (auto shape : {ShapeFunctionKind::ugimp, ShapeFunctionKind::ddmp}) {
+      auto inside = [&](const Eigen::Vector3d& x) { return square || x[0] * x[0] + x[1] * x[1] <= r * r; };
+      PointSet points = empty_point_set(h, 2);
+      add_points(points, Eigen::Vector3d(-r, -r, 0), Eigen::Vector3d(r, r, L), "column", inside);
+      for (auto& x : points.position) x[0] += a * std::sin(M_PI * x[2] / L);
+      add_points(points, Eigen::Vector3d(-r, -r, -2 * h), Eigen::Vector3d(r, r, 0), "base", inside);
+      add_points(points, Eigen::Vector3d(-r, -r, L), Eigen::Vector3d(r, r, L + 2 * h), "plate", inside);
+      Settings s;
+      s.cell_size = h;
+      s.shape_function = shape;
+      s.cfl = 0.3;
+      s.threads = 2;
+      Simulation sim(points,
+                     {deformable("column", elastic(E, nu, rho)), rigid("base", BodyRole::fixed, Vec3::Zero(), rho),
+                      rigid("plate", BodyRole::driven, Vec3(0, 0, -speed), rho)},
+                     s);
+      Real impulse = 0, span = 0;
+      sim.add_observer([&](const Simulation&, const StepDiagnostics& d) {
+        if (d.time * speed < 0.75 * travel) return;
+        impulse += -d.reaction[2][2] * d.dt;
+        span += d.dt;
+      });
+      sim.run_until(travel / speed);
+      std::cout << "column " << (square ? "square" : "round") << " " << to_string(shape) << " plateau "
+                << impulse / span << " N, " << sim.particles().size() << " points\n";
+    }
 }
