@@ -2,7 +2,8 @@
 #   T1P20 ... T2P40 x E in {10, 100} MPa, nu = 0.4, real density rho0 = 1050 kg/m^3, shape in
 #   {uGIMP, DDMP} (DDMP with USL, its default; DDMP=0 leaves it out; QUICK: T2P30-E10 only),
 #   flyer 10 kg at 2 m/s, gravity 9.81 m/s^2 on flyer and lattice, bottom plate held,
-#   5x5x5 cells, 3 mm plates, cell 0.64 mm, 2 points per cell per direction, 25 ms.
+#   5x5x5 cells, 3 mm plates, cell 0.64 mm, 2 points per cell per direction, 25 ms (the
+#   40-degree lattices 30 ms: their flyers reverse after 25 ms).
 #   QUICK=1: 2x2x2 cells, 2 mm plates, cell 1 mm, 20 ms, and the flyer's mass scaled with the
 #   lattice's volume, 10 kg x (2x2x2)/(5x5x5) = 0.64 kg, so that the energy per cell is the
 #   paper's (a 10 kg flyer would crush the small lattice flat in a few ms).
