@@ -8,13 +8,9 @@
 # usage: impact-levers.sh BIN_DIR OUT_DIR
 set -euo pipefail
 bin=$1 out=$2
-points=results/impact/quick/points-T2P30.h5
-[ -f "$points" ] || { echo "impact-levers.sh: $points: missing (make results/impact/quick/points-T2P30.h5 QUICK=1)" >&2; exit 2; }
+script=impact-levers.sh
+source "$(dirname "$0")/impact-quick-row.sh"
 mkdir -p "$out"
-row=(--set "points.0.file=$points" --set grid.cell=1mm --set grid.shape=ugimp --set run.end.time=20ms
-     --set rigid_bodies.flyer.mass=0.64kg --set output.series_every=20
-     --set 'rigid_bodies.flyer.min=["-100mm","-100mm","22.666700mm"]' --set 'rigid_bodies.flyer.max=["100mm","100mm","42.666700mm"]'
-     --set output.snapshot_every=100000 --threads 1 --quiet)
 base=(--set bodies.bottom_plate.role=omitted --set rigid_bodies.base.motion=fixed --set rigid_bodies.base.shape=half_space
       --set 'rigid_bodies.base.point=["0mm","0mm","2mm"]' --set 'rigid_bodies.base.normal=[0,0,1]')
 run() {
