@@ -104,4 +104,19 @@ inline void mark_fixed_body_nodes(const FixedBodyNodes& nodes, SparseGrid& grid)
   }
 }
 
+// After each grid clear: the marks, from the list (made, and the points set to rest, the first
+// time after the list went stale). Nothing without a marked-once body; CPDI1 never has one.
+template <class Shape>
+void mark_fixed_bodies(FixedBodyNodes& nodes, Particles& ps, const std::vector<BodyInfo>& bodies, Real h,
+                       SparseGrid& grid) {
+  if constexpr (!Shape::uses_domain_vertices) {  // CPDI1 keeps its points in the step (simulation.cpp)
+    if (std::none_of(bodies.begin(), bodies.end(), [](const BodyInfo& b) { return b.marked_once; })) return;
+    if (!nodes.ready) {
+      nodes = find_fixed_body_nodes<Shape>(ps, bodies, h);
+      rest_fixed_body_points(ps, bodies);
+    }
+    mark_fixed_body_nodes(nodes, grid);
+  }
+}
+
 }  // namespace latmpm::mpm

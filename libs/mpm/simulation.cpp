@@ -143,7 +143,7 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
   if (settings_.mark_fixed_bodies_once && !settings_.field_contact.enabled &&
       settings_.shape_function != ShapeFunctionKind::cpdi1 && context_->domain.process_count() == 1)
     for (size_t b = 0; b < bodies_.size(); ++b)
-      if (bodies_[b].role == BodyRole::fixed) context_->body_info[b].marked_once = context_->any_marked_once = true;
+      if (bodies_[b].role == BodyRole::fixed) context_->body_info[b].marked_once = true;
   if (settings_.shape_function == ShapeFunctionKind::cpgimp && settings_.scheme == UpdateScheme::usl)
     refuse_wide_cpgimp_domains(state_.particles, bodies_, settings_.cell_size, where);
 

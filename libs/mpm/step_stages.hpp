@@ -80,7 +80,6 @@ struct StepContext {
   Reactions reactions;              // of the node update, per point body
   DdmpNodalValues ddmp_nodal;       // DDMP: σ^d, L and small-mass shares per node (ddmp_grid.hpp)
   FixedBodyNodes fixed_body_nodes;  // the marks of fixed bodies the step leaves out (fixed_body_nodes.hpp)
-  bool any_marked_once = false;     // some BodyInfo::marked_once (set with them, simulation.cpp)
   Real ddmp_small_mass = -1;        // DDMP: below this a node's lanes go to its neighbours, kg (set on first use)
   // The most the penalty springs have held in this process's run, J: the energy checks count
   // it as put in, so that springs compressed at the start (points placed inside a body), once
@@ -266,15 +265,7 @@ void prepare_grid(SolverState& s, StepContext& c) {
   if constexpr (Shape::smoothed_on_grid)
     fill_ddmp_alpha(s.particles.position, c.settings.cell_size, c.ddmp_partition(), c.ddmp_nodal);
   clear_grid(s.grid);
-  if constexpr (!Shape::uses_domain_vertices) {  // CPDI1 keeps its points in the step (simulation.cpp)
-    if (c.any_marked_once) {
-      if (!c.fixed_body_nodes.ready) {
-        c.fixed_body_nodes = find_fixed_body_nodes<Shape>(s.particles, c.body_info, c.settings.cell_size);
-        rest_fixed_body_points(s.particles, c.body_info);
-      }
-      mark_fixed_body_nodes(c.fixed_body_nodes, s.grid);
-    }
-  }
+  mark_fixed_bodies<Shape>(c.fixed_body_nodes, s.particles, c.body_info, c.settings.cell_size, s.grid);
   s.grid_holds_velocity = false;
   c.tallies.assign(list.size(), BucketTally{});
   c.run_tallies.assign(s.buckets.runs().size(), RunTally{});
