@@ -50,6 +50,8 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"cpdi_domain", true}, ps.cpdi_domain, CpdiParticleDomain(CpdiParticleDomain::Zero()));
   visit(ParticleField{"contact_field", true, false, FieldBound::byte}, ps.contact_field, uint8_t(0));
   visit(ParticleField{"reference_position", true}, ps.reference_position, Vec3(Vec3::Zero()));
+  visit(ParticleField{"ddmp_stabilization_stress", true}, ps.ddmp_stabilization_stress,
+        ParticleSymTensor(ParticleSymTensor::Zero()));
   for (auto& column : ps.history)
     visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
 }

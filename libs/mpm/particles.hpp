@@ -50,6 +50,9 @@ struct Particles {
   // Where each point started (X_p, m), empty unless the null-space filter anchors its fit to
   // the reference map (NullSpaceFilter::reference_map).
   std::vector<Vec3> reference_position;
+  // DDMP's stabilization stress σ_s (Pa, Voigt as stress; ddmp_stabilization.hpp), empty
+  // unless the run's DDMP is stabilized (Settings::ddmp_stabilization > 0).
+  std::vector<ParticleSymTensor> ddmp_stabilization_stress;
   // Material history, one column per variable the run's models declare (material_history.hpp).
   std::vector<HistoryColumn> history;
 

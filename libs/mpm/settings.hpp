@@ -61,6 +61,11 @@ struct Settings {
   // deformable body) hands its mass, momentum and force on to its neighbours and reads its
   // velocity back from them (ddmp_grid.hpp, distribution coefficients).
   Real ddmp_small_mass_fraction = 0.01;  // in [0, 1)
+  // DDMP: the stabilization of the smoothed gradient's null space (ddmp_stabilization.hpp),
+  // β times the body's elastic moduli on the difference between the plain linear-MPM
+  // gradient and Eq. 7's. 0: Paper A's DDMP as printed. DDMP on the grid without sub-points
+  // only (the set-up refuses β > 0 otherwise).
+  Real ddmp_stabilization = 0.3;  // ≥ 0
   // Fixed point bodies' nodes marked from a list made once, their points left out of the
   // transfers (fixed_body_nodes.hpp; bit-identical). false: scattered every step, as before
   // (the reference of test_mpm "Fixed bodies marked once*").

@@ -133,6 +133,16 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
 
   if (settings_.null_space_filter == NullSpaceFilter::reference_map)
     state_.particles.reference_position = state_.particles.position;
+  if (settings_.shape_function == ShapeFunctionKind::ddmp && settings_.ddmp_stabilization > 0) {
+    if (!settings_.ddmp_on_grid || settings_.ddmp_subpoints)
+      throw InputError(where, "grid.ddmp_stabilization",
+                       "needs DDMP on the grid without sub-points (ddmp_on_grid = true, ddmp_subpoints = false) or 0");
+    for (size_t b = 0; b < bodies_.size(); ++b)
+      if (bodies_[b].role == BodyRole::deformable)
+        context_->body_info[b].ddmp_stabilization =
+            ddmp_stabilization_moduli(bodies_[b].material, settings_.ddmp_stabilization);
+    state_.particles.ddmp_stabilization_stress.assign(n, ParticleSymTensor::Zero());
+  }
   if (settings_.field_contact.enabled)  // points in field order: Particles::contact_field
     context_->grid_fields = make_contact_fields(settings_.field_contact, settings_.mass_scaling, points, bodies_,
                                                 state_.particles.contact_field, where);

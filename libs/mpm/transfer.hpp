@@ -15,6 +15,7 @@
 #include "mpm/body.hpp"
 #include "mpm/bucket_buffer.hpp"
 #include "mpm/ddmp_grid.hpp"
+#include "mpm/ddmp_stabilization.hpp"
 #include "mpm/material_history.hpp"
 #include "mpm/material_model.hpp"
 #include "mpm/node_lanes.hpp"
@@ -39,6 +40,9 @@ struct BodyInfo {
   // A fixed body whose nodes are marked from a list made once (fixed_body_nodes.hpp): the
   // transfers leave its points out.
   bool marked_once = false;
+  // Deformable body under stabilized DDMP: β times its moduli (ddmp_stabilization.hpp);
+  // μ = 0: none.
+  LinearElastic ddmp_stabilization{};
 };
 
 // Which node lanes a particles-to-grid pass fills.
@@ -224,6 +228,14 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         if constexpr (Mode::force && Shape::smoothed_on_grid) {
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
           scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p].template cast<Real>(), buffer);
+          if constexpr (!Shape::per_node_gradient)
+            if (bodies[run.body].ddmp_stabilization.mu > 0) {
+              // The stabilization's force (ddmp_stabilization.hpp): −σ_s through σ^d, and its local part.
+              const ParticleSymTensor& s = ps.ddmp_stabilization_stress[p];
+              scatter_ddmp_corner_stress(st, minus_volume, SymTensor(-s.template cast<Real>()), buffer);
+              scatter_ddmp_stabilization_local<BucketBuffer::stride_i, BucketBuffer::stride_j, L, lane::force>(
+                  st, minus_volume, s, h, first);
+            }
         }
         if constexpr (Mode::force && Shape::per_node_gradient) {
           // DDMP's gradient part that is not a tensor product (Paper A Eq. 4, 7): the smoothed
@@ -432,6 +444,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
           // Wave speeds grow as J falls (never the other way), so the run's smallest J
           // gives its largest wave speed: one evaluation per run instead of per particle.
           Real min_j = std::numeric_limits<Real>::infinity();
+          [[maybe_unused]] const bool stabilized = body.ddmp_stabilization.mu > 0;
           for (uint32_t g0 = run.begin; g0 < run.end; g0 += pack_width) {
             const int n = int(std::min<uint32_t>(pack_width, run.end - g0));
             // 0. The group's particle state, one particle per lane, read before the grid
@@ -481,6 +494,19 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 ddmp_corner_velocity_gradient(st, buffer, L);
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
+                if constexpr (!Shape::per_node_gradient)
+                  if (stabilized) {  // σ_s from the plain gradient against L̄ (ddmp_stabilization.hpp)
+                    const auto plain = interpolate<true>(ddmp_plain_gradient_stencil(st, h), buffer);
+                    Real plain_l[3][3], smoothed_l[3][3];
+                    for (int a = 0; a < 3; ++a) {
+                      plain_l[a][0] = plain.ax[Mode::gradient_lane + a];
+                      plain_l[a][1] = plain.ay[Mode::gradient_lane + a];
+                      plain_l[a][2] = plain.az[Mode::gradient_lane + a];
+                      for (int c = 0; c < 3; ++c) smoothed_l[a][c] = grad_v[a][c][q];
+                    }
+                    update_ddmp_stabilization_stress(body.ddmp_stabilization, plain_l, smoothed_l, dt,
+                                                     ps.ddmp_stabilization_stress[g0 + uint32_t(q)]);
+                  }
               }
             }
             // 2. Update the group's particles together, one per lane.
@@ -537,6 +563,10 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 if (!(J > par.min_jacobian))
                   note_fault(tally, std::isfinite(J) ? ParticleFault::inverted : ParticleFault::not_finite, p);
                 if (!std::isfinite(energy[q])) note_fault(tally, ParticleFault::not_finite, p);
+                if constexpr (Shape::smoothed_on_grid && !Shape::per_node_gradient)
+                  if (stabilized)  // booked as strain energy (ddmp_stabilization.hpp)
+                    strain[q] += volume0[q] * ddmp_stabilization_energy_density(body.ddmp_stabilization,
+                                                                                ps.ddmp_stabilization_stress[p], J);
                 min_j = std::min(min_j, J);
                 ParticleMat3& Fp = ps.deformation[p];
                 for (int r = 0; r < 3; ++r)

@@ -31,6 +31,14 @@ void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReade
   s.ddmp_small_mass_fraction = grid.number("ddmp_small_mass_fraction", s.ddmp_small_mass_fraction);
   if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
     grid.fail("ddmp_small_mass_fraction", "must lie in [0, 1)");
+  // The stabilization belongs to DDMP on the grid without sub-points; the per-particle
+  // reference form and the sub-points study run Paper A's DDMP unless the key asks otherwise.
+  const bool stabilizable = s.ddmp_on_grid && !s.ddmp_subpoints;
+  s.ddmp_stabilization = grid.number("ddmp_stabilization", stabilizable ? s.ddmp_stabilization : 0);
+  if (!(s.ddmp_stabilization >= 0 && s.ddmp_stabilization <= 10))
+    grid.fail("ddmp_stabilization", "must lie in [0, 10] (a fraction of the body's elastic moduli)");
+  if (s.ddmp_stabilization > 0 && !stabilizable)
+    grid.fail("ddmp_stabilization", "needs ddmp_on_grid = true without ddmp_subpoints (or 0)");
 
   if (time.has("dt") && time.has("cfl"))
     time.fail("dt", "give either dt (a fixed step) or cfl (a step from the wave speed), not both");

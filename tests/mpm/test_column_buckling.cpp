@@ -122,3 +122,53 @@ TEST_CASE("Buckled column plateau, round against square section", "[.][column-se
                 << impulse / span << " N, " << sim.particles().size() << " points\n";
     }
 }
+
+// DDMP's smoothed gradient has a null space (ddmp_stabilization.hpp): node-to-node zig-zags
+// that no smoothed strain sees, so Paper A's DDMP as printed carries less than uGIMP once the
+// column bends (docs/solver.md, "DDMP", "The smoothed gradient's null space"). Issue 15's
+// bound: the post-buckling load within 5 % of uGIMP's and 10 % of the Euler load. Paper A's
+// column t = 1.6 mm, a = 0.02 L, at 0.4 mm cells (4 across), 100 mm/s, 2 mm of travel; load =
+// the driven plate's mean reaction over 1.25–2 mm. The unstabilized run shows the softness
+// the stabilization removes (measured: 0.94 of uGIMP; stabilized 0.98).
+TEST_CASE("DDMP's buckled column carries uGIMP's load within 5 % once its null space is stabilized",
+          "[mpm][buckling][ddmp]") {
+  const Real t = 1.6e-3, L = 16e-3, E = 10e6, nu = 0.4, rho = 6300, speed = 0.1, a = 0.02 * L, h = 0.4e-3;
+  const Real r = t / 2, travel = 2e-3, from = 1.25e-3;
+  auto plateau = [&](ShapeFunctionKind shape, Real stabilization) {
+    auto inside = [&](const Eigen::Vector3d& x) { return x[0] * x[0] + x[1] * x[1] <= r * r; };
+    PointSet points = empty_point_set(h, 2);
+    add_points(points, Eigen::Vector3d(-r, -r, 0), Eigen::Vector3d(r, r, L), "column", inside);
+    for (auto& x : points.position) x[0] += a * std::sin(M_PI * x[2] / L);
+    add_points(points, Eigen::Vector3d(-r, -r, -2 * h), Eigen::Vector3d(r, r, 0), "base", inside);
+    add_points(points, Eigen::Vector3d(-r, -r, L), Eigen::Vector3d(r, r, L + 2 * h), "plate", inside);
+    Settings s;
+    s.cell_size = h;
+    s.shape_function = shape;
+    s.scheme = UpdateScheme::usl;
+    s.cfl = 0.3;
+    s.mass_scaling = 1;  // rho is already 6 rho0
+    s.ddmp_stabilization = stabilization;
+    s.threads = 2;
+    Simulation sim(points,
+                   {deformable("column", elastic(E, nu, rho)), rigid("base", BodyRole::fixed, Vec3::Zero(), rho),
+                    rigid("plate", BodyRole::driven, Vec3(0, 0, -speed), rho)},
+                   s);
+    Real impulse = 0, span = 0;
+    sim.add_observer([&](const Simulation&, const StepDiagnostics& d) {
+      if (d.time * speed < from) return;
+      impulse += -d.reaction[2][2] * d.dt;
+      span += d.dt;
+    });
+    sim.run_until(travel / speed);
+    return impulse / span;
+  };
+  const Real euler = M_PI * M_PI * E * (M_PI * std::pow(t, 4) / 64) / std::pow(0.5 * L, 2);  // 0.496 N
+  const Real ugimp = plateau(ShapeFunctionKind::ugimp, 0);
+  const Real ddmp = plateau(ShapeFunctionKind::ddmp, Settings{}.ddmp_stabilization);
+  const Real printed = plateau(ShapeFunctionKind::ddmp, 0);
+  INFO("uGIMP " << ugimp << " N, DDMP " << ddmp << " N (" << ddmp / ugimp << " of uGIMP, " << ddmp / euler
+                << " of Euler " << euler << " N), DDMP unstabilized " << printed << " N (" << printed / ugimp << ")");
+  CHECK(std::abs(ddmp / ugimp - 1) < 0.05);
+  CHECK(std::abs(ddmp / euler - 1) < 0.10);
+  CHECK(printed / ugimp < 0.95);
+}

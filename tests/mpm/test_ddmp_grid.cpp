@@ -37,6 +37,7 @@ std::unique_ptr<Simulation> deformed_block(bool on_grid, unsigned seed, bool sub
   s.threads = 2;
   s.ddmp_on_grid = on_grid;
   s.ddmp_subpoints = subpoints;
+  s.ddmp_stabilization = 0;  // the forms of Eq. 4 and 7 compared as Paper A prints them
   auto sim = std::make_unique<Simulation>(points, std::vector<BodySettings>{deformable("block", elastic(1e6, 0.3, 1000))}, s);
   Particles& ps = sim->mutable_particles();
   for (size_t p = 0; p < ps.size(); ++p) {
