@@ -135,13 +135,23 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
   return {fit[0], fit[1], fit[2], fit[3]};
 }
 
-// The distribution of a pattern, remembered: a surface has few patterns (a flat face, its
-// edges and corners, a particle entering a cell), so the 4×4 solve and the shares are
-// computed once per pattern, not once per node and step. Insert-only and shared by the
+// The distributions remembered: a surface has few patterns (a flat face, its edges and
+// corners, a particle entering a cell), so the 4×4 solve and the shares are computed once
+// per pattern, not once per node and step. Insert-only during a step and shared by the
 // threads (entries never move); a pure function of the pattern, so results do not depend
-// on which thread computed it.
+// on which thread computed it, nor on when the memo was last emptied.
+using DistributionMemo = tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash>;
+inline DistributionMemo& distribution_memo() {
+  static DistributionMemo memo;
+  return memo;
+}
+// A crushed lattice keeps making new patterns: the QUICK DDMP impact had gathered 1.8 GB of
+// them by its end (2026-11-27). Past this many entries the memo is emptied between steps
+// (find_ddmp_small_mass_nodes, before any pointer into it is taken): a few MB of shares.
+inline constexpr size_t distribution_memo_limit = size_t(1) << 14;
+
 inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& pattern) {
-  static tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash> memo;
+  DistributionMemo& memo = distribution_memo();
   const auto it = memo.find(pattern);
   if (it != memo.end()) return it->second;
   DdmpDistribution d;
@@ -227,6 +237,8 @@ inline int block_colour(const SparseGrid::Coord& c) {
 // at their neighbourhood, through rows of those bits.
 inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
+  // The previous step's pointers into the memo (nv.distributions) are all replaced below.
+  if (distribution_memo().size() > distribution_memo_limit) distribution_memo().clear();
   const size_t blocks = grid.block_count();
   std::vector<uint64_t>& sizeable = nv.sizeable_mask;
   std::vector<uint64_t>& with_mass = nv.mass_mask;

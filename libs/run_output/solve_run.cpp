@@ -168,7 +168,11 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
            (scene_.settings.null_space_filter == mpm::NullSpaceFilter::none
                 ? std::string()
                 : ", null-space filter " + to_string(scene_.settings.null_space_filter) + " every " +
-                      std::to_string(scene_.settings.null_space_filter_every) + " steps"));
+                      std::to_string(scene_.settings.null_space_filter_every) + " steps") +
+           (scene_.settings.shape_function == mpm::ShapeFunctionKind::ddmp
+                ? ", DDMP null-space stabilization " + format_number("%g", scene_.settings.ddmp_stabilization) +
+                      (scene_.settings.ddmp_stabilization > 0 ? " of the elastic moduli" : " (Paper A as printed)")
+                : std::string()));
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();
