@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
     s.scheme = parse_update_scheme(scheme);
     s.threads = threads;
     s.ddmp_on_grid = ddmp_on_grid;
+    if (!ddmp_on_grid) s.ddmp_stabilization = 0;  // the per-particle form is unstabilized
     s.field_contact.enabled = contact_fields > 0;
     s.field_contact.groups = groups;
     BodySettings body;

@@ -147,7 +147,8 @@ inline DistributionMemo& distribution_memo() {
 }
 // A crushed lattice keeps making new patterns: the QUICK DDMP impact had gathered 1.8 GB of
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
-// (find_ddmp_small_mass_nodes, before any pointer into it is taken): a few MB of shares.
+// (find_ddmp_small_mass_nodes, before any pointer into it is taken): at most ≈ 50 MB of
+// shares (124 × 24 B each). One memo for the process: Simulations step one at a time.
 inline constexpr size_t distribution_memo_limit = size_t(1) << 14;
 
 inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& pattern) {

@@ -2,9 +2,9 @@
 // DDMP; docs/solver.md, "DDMP", "The smoothed gradient's null space").
 //
 // Why. Eq. 7's smoothed part is a central difference of the nodal velocities:
-// ∫ S_j ∂_x S_i dV is ±h²/2 for node j's two neighbours along x and 0 for j itself
-// (shape_ddmp.hpp). So a nodal velocity that alternates from node plane to node plane along
-// the direction it differentiates — an axial v_z ∝ (−1)^{i_z}, or a sideways zig-zag
+// ∫ S_j ∂_x S_i dV = h² D(i_x − j_x) M(i_y − j_y) M(i_z − j_z) with D(0) = 0 (shape_ddmp.hpp),
+// zero for every node i in j's own x plane. So a nodal velocity that alternates from node
+// plane to node plane along the direction it differentiates — an axial v_z ∝ (−1)^{i_z}, or a sideways zig-zag
 // v_x ∝ (−1)^{i_z} along a column — has no smoothed strain rate at all. Only the α part sees
 // it, and Eq. 5's α is at most 0.23 and zero on every cell face, so these patterns cost almost
 // no strain energy: the zero-energy modes of nodal integration (Puso, Chen, Zywicz & Elmer
@@ -12,7 +12,8 @@
 // with the linear S_i, which do see the patterns; F, integrated from L̄, does not. On paper A's
 // buckled column (t = 1.6 mm, 0.4 mm cells) the points' positions showed 1.45 times the strain
 // energy their F held (uGIMP: 0.96), their sideways positions carried a zig-zag of period 2h
-// eight times uGIMP's, and the column was 8 % softer than uGIMP (docs/solver.md).
+// eight times uGIMP's, and its post-buckling load over the last quarter of 3 mm of travel was
+// 0.917 of uGIMP's (0.892 at 0.2 mm; docs/solver.md, "DDMP column: the cause").
 //
 // What. Each point of a deformable body carries a stabilization stress σ_s, elastic in the
 // difference between its plain linear-MPM velocity gradient L = Σ_i v_i ⊗ ∇S_i(x_p) and
@@ -20,12 +21,15 @@
 //   σ_s ← σ_s + dt [β C : sym(L − L̄) + W̄ σ_s − σ_s W̄],
 // and puts on the nodes the force conjugate to that rate, f_i = −V σ_s (∇S_i − ∇̄S_i)
 // = −V (1 − α) σ_s (∇S_i − Σ_j S_j/V_j ∫ S_j ∇S_i dV): the local part on the cell's 8 nodes,
-// the smoothed part through the nodal stress σ^d (ddmp_grid.hpp) with −σ_s. For a field the
-// smoothed gradient reproduces (linear velocity, rigid motion) L = L̄ and σ_s stays zero;
+// the smoothed part through the nodal stress σ^d (ddmp_grid.hpp) with −σ_s. For a linear
+// nodal velocity field (rigid motion included; the small-mass read-back extends a linear
+// field exactly past free surfaces) L = L̄ and σ_s stays zero;
 // for the null-space patterns it gives back β times linear MPM's stiffness. Its energy,
 // ½ σ_s : (βC)⁻¹ : σ_s per current volume, is booked as strain energy so the balance closes.
 // Eq. 8 (the gradient's sums) and mass, momentum and the smoothed gradient itself are
-// unchanged. β = 0 (`grid.ddmp_stabilization = 0`) is Paper A's DDMP as printed.
+// unchanged. β = 0 (`grid.ddmp_stabilization = 0`) is Paper A's DDMP as printed; β ≤ 1, so
+// the zig-zag is never stiffer than in linear MPM and the material's stable step holds. σ_s is
+// elastic for every material model: with J2 it does not yield (not measured on a J2 scene).
 #pragma once
 #include "mpm/linear_elastic.hpp"
 #include "mpm/shape_ddmp.hpp"

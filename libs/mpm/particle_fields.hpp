@@ -29,6 +29,8 @@ struct ParticleField {
   // Shown in snapshots beside the fixed snapshot quantities (particle_snapshot.hpp).
   bool snapshot = false;
   FieldBound bound = FieldBound::any;
+  // An optional field the scene's run uses and the checkpoint lacks: what the user can do.
+  const char* when_missing = "the scene's run uses it, the checkpoint's run did not";
 };
 
 // Calls visit(field, values, fill) for every per-particle array of ps, in a fixed order;
@@ -50,8 +52,10 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
   visit(ParticleField{"cpdi_domain", true}, ps.cpdi_domain, CpdiParticleDomain(CpdiParticleDomain::Zero()));
   visit(ParticleField{"contact_field", true, false, FieldBound::byte}, ps.contact_field, uint8_t(0));
   visit(ParticleField{"reference_position", true}, ps.reference_position, Vec3(Vec3::Zero()));
-  visit(ParticleField{"ddmp_stabilization_stress", true}, ps.ddmp_stabilization_stress,
-        ParticleSymTensor(ParticleSymTensor::Zero()));
+  visit(ParticleField{"ddmp_stabilization_stress", true, false, FieldBound::any,
+                      "the checkpoint's DDMP run was not stabilized (written before 2026-11-27 or with "
+                      "grid.ddmp_stabilization = 0): resume with --set grid.ddmp_stabilization=0"},
+        ps.ddmp_stabilization_stress, ParticleSymTensor(ParticleSymTensor::Zero()));
   for (auto& column : ps.history)
     visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
 }

@@ -24,6 +24,9 @@ void validate(const Settings& s, const std::string& where) {
   if (!positive(s.ddmp_alpha_exponent)) throw InputError(where, "ddmp_alpha_exponent", "must be positive");
   if (!(s.ddmp_small_mass_fraction >= 0 && s.ddmp_small_mass_fraction < 1))
     throw InputError(where, "ddmp_small_mass_fraction", "must lie in [0, 1)");
+  // ≤ 1: the stable step is the material's; the zig-zag's stiffness is then at most linear MPM's.
+  if (!(s.ddmp_stabilization >= 0 && s.ddmp_stabilization <= 1))
+    throw InputError(where, "ddmp_stabilization", "must lie in [0, 1] (a fraction of the body's elastic moduli)");
   // A study option of DDMP's grid form: elsewhere it would be silently ignored.
   if (s.ddmp_subpoints && !(s.shape_function == ShapeFunctionKind::ddmp && s.ddmp_on_grid))
     throw InputError(where, "ddmp_subpoints", "needs shape ddmp with ddmp_on_grid");

@@ -64,8 +64,9 @@ struct Settings {
   // DDMP: the stabilization of the smoothed gradient's null space (ddmp_stabilization.hpp),
   // β times the body's elastic moduli on the difference between the plain linear-MPM
   // gradient and Eq. 7's. 0: Paper A's DDMP as printed. DDMP on the grid without sub-points
-  // only (the set-up refuses β > 0 otherwise).
-  Real ddmp_stabilization = 0.3;  // ≥ 0
+  // only: the set-up refuses β > 0 — the default included — with ddmp_on_grid = false or
+  // ddmp_subpoints (set 0 there; the scene reader does).
+  Real ddmp_stabilization = 0.3;  // in [0, 1]
   // Fixed point bodies' nodes marked from a list made once, their points left out of the
   // transfers (fixed_body_nodes.hpp; bit-identical). false: scattered every step, as before
   // (the reference of test_mpm "Fixed bodies marked once*").

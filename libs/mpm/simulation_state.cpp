@@ -217,8 +217,7 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
     if (field.optional && values.empty()) return;  // the scene's run does not use it
     if (field.optional && !particles_in.has(field.name))
-      throw InputError(f.path(), g + "/particles/" + field.name,
-                       "missing: the scene's run uses it, the checkpoint's run did not");
+      throw InputError(f.path(), g + "/particles/" + field.name, std::string("missing: ") + field.when_missing);
     values = particles_in.rows<typename std::decay_t<decltype(values)>::value_type>(field.name, n,
                                                                                    allowed(field.bound, n, nb, nr));
     if constexpr (std::is_same_v<std::decay_t<decltype(values)>, std::vector<uint32_t>>)

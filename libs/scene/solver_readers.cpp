@@ -35,8 +35,8 @@ void read(TableReader& grid, TableReader& time, TableReader& gravity, TableReade
   // reference form and the sub-points study run Paper A's DDMP unless the key asks otherwise.
   const bool stabilizable = s.ddmp_on_grid && !s.ddmp_subpoints;
   s.ddmp_stabilization = grid.number("ddmp_stabilization", stabilizable ? s.ddmp_stabilization : 0);
-  if (!(s.ddmp_stabilization >= 0 && s.ddmp_stabilization <= 10))
-    grid.fail("ddmp_stabilization", "must lie in [0, 10] (a fraction of the body's elastic moduli)");
+  if (!(s.ddmp_stabilization >= 0 && s.ddmp_stabilization <= 1))
+    grid.fail("ddmp_stabilization", "must lie in [0, 1] (a fraction of the body's elastic moduli)");
   if (s.ddmp_stabilization > 0 && !stabilizable)
     grid.fail("ddmp_stabilization", "needs ddmp_on_grid = true without ddmp_subpoints (or 0)");
 
