@@ -1,5 +1,6 @@
 // DDMP's stabilization of the smoothed gradient's null space (our addition to Paper A's
-// DDMP; docs/solver.md, "DDMP", "The smoothed gradient's null space").
+// DDMP; docs/solver.md, "DDMP": the bullet "The smoothed gradient's null space is
+// stabilized" and "DDMP column: the cause, and the stabilization").
 //
 // Why. Eq. 7's smoothed part is a central difference of the nodal velocities:
 // ∫ S_j ∂_x S_i dV = h² D(i_x − j_x) M(i_y − j_y) M(i_z − j_z) with D(0) = 0 (shape_ddmp.hpp),

@@ -134,7 +134,7 @@ TEST_CASE("Buckled column plateau, round against square section", "[.][column-se
 
 // DDMP's smoothed gradient has a null space (ddmp_stabilization.hpp): node-to-node zig-zags
 // that no smoothed strain sees, so Paper A's DDMP as printed carries less than uGIMP once the
-// column bends (docs/solver.md, "DDMP", "The smoothed gradient's null space"). Issue 15's
+// column bends (docs/solver.md, "DDMP column: the cause, and the stabilization"). Issue 15's
 // bound: the post-buckling load within 5 % of uGIMP's and 10 % of the Euler load. Paper A's
 // column t = 1.6 mm, a = 0.02 L, at 0.4 mm cells (4 across), 100 mm/s, 2 mm of travel; load =
 // the driven plate's mean reaction over 1.25–2 mm. The unstabilized run shows the softness
