@@ -30,6 +30,10 @@ void validate(const Settings& s, const std::string& where) {
   // A study option of DDMP's grid form: elsewhere it would be silently ignored.
   if (s.ddmp_subpoints && !(s.shape_function == ShapeFunctionKind::ddmp && s.ddmp_on_grid))
     throw InputError(where, "ddmp_subpoints", "needs shape ddmp with ddmp_on_grid");
+  // The stabilization is the grid form's (ddmp_stabilization.hpp); the default β too.
+  if (s.shape_function == ShapeFunctionKind::ddmp && s.ddmp_stabilization > 0 && (!s.ddmp_on_grid || s.ddmp_subpoints))
+    throw InputError(where, "ddmp_stabilization",
+                     "needs DDMP on the grid without sub-points (ddmp_on_grid = true, ddmp_subpoints = false) or 0");
   if (!positive(s.mass_scaling)) throw InputError(where, "mass_scaling", "must be positive");
   if (!s.gravity.allFinite()) throw InputError(where, "gravity", "must be finite");
   if (!(s.record_layer_thickness >= 0)) throw InputError(where, "record_layer_thickness", "must not be negative");

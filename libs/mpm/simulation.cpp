@@ -133,10 +133,8 @@ Simulation::Simulation(const PointSet& points, const std::vector<BodySettings>& 
 
   if (settings_.null_space_filter == NullSpaceFilter::reference_map)
     state_.particles.reference_position = state_.particles.position;
+  // DDMP stabilized (validate() has refused the forms without it): each body's moduli, σ_s per point.
   if (settings_.shape_function == ShapeFunctionKind::ddmp && settings_.ddmp_stabilization > 0) {
-    if (!settings_.ddmp_on_grid || settings_.ddmp_subpoints)
-      throw InputError(where, "grid.ddmp_stabilization",
-                       "needs DDMP on the grid without sub-points (ddmp_on_grid = true, ddmp_subpoints = false) or 0");
     for (size_t b = 0; b < bodies_.size(); ++b)
       if (bodies_[b].role == BodyRole::deformable)
         context_->body_info[b].ddmp_stabilization =

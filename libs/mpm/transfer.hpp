@@ -159,6 +159,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
     if (rigid && (!Mode::constraint || bodies[run.body].marked_once)) continue;
+    [[maybe_unused]] const bool stabilized = bodies[run.body].ddmp_stabilization.mu > 0;  // ddmp_stabilization.hpp
     if (buffer.field >= 0 && ps.contact_field[run.begin] != buffer.field) continue;  // another field's run
     // The stencils of up to eight points first: independent computations the CPU overlaps,
     // instead of each one's latency ahead of its point's scatter.
@@ -229,7 +230,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
           // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
           scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p].template cast<Real>(), buffer);
           if constexpr (!Shape::per_node_gradient)
-            if (bodies[run.body].ddmp_stabilization.mu > 0) {
+            if (stabilized) {
               // The stabilization's force (ddmp_stabilization.hpp): −σ_s through σ^d, and its local part.
               const ParticleSymTensor& s = ps.ddmp_stabilization_stress[p];
               scatter_ddmp_corner_stress(st, minus_volume, SymTensor(-s.template cast<Real>()), buffer);
