@@ -22,6 +22,10 @@ namespace latmpm::mpm {
 struct HistoryVariable {
   const char* name;  // unique across the models of a run; a particle column's name
   Real initial;      // value at the start of a run
+  // A checkpoint without the column (written before the variable existed) resumes with the
+  // initial value where that is a meaningful state (linear elastic's work excess); otherwise
+  // the checkpoint is refused.
+  bool initial_when_missing = false;
 };
 
 template <class Model, class = void>
@@ -77,7 +81,7 @@ std::vector<uint32_t> declare_history(Particles& ps) {
   for (const HistoryVariable& v : material_history<Model>::variables) {
     uint32_t k = 0;
     while (k < ps.history.size() && ps.history[k].name != v.name) ++k;
-    if (k == ps.history.size()) ps.history.push_back({v.name, v.initial, std::vector<Real>(ps.size(), v.initial)});
+    if (k == ps.history.size()) ps.history.push_back({v.name, v.initial, std::vector<Real>(ps.size(), v.initial), v.initial_when_missing});
     columns.push_back(k);
   }
   return columns;

@@ -6,6 +6,8 @@
 // Stress<T>) (J/m³ of reference volume), and wave_speed_squared(J) (m²/s², non-increasing
 // in J: the solver evaluates it at the smallest J of each body run).
 #pragma once
+#include <algorithm>
+#include <array>
 #include <variant>
 
 #include "mpm/j2_material.hpp"
@@ -26,16 +28,27 @@ inline MaterialModel make_material_model(const MaterialParameters& m, Real mass_
   return LinearElastic::from(m, mass_scaling);
 }
 
+// A particle's history variables at the start of a run (at least one slot, so that
+// .data() is never null).
+template <class Model>
+std::array<Real, std::max<size_t>(history_size<Model>, 1)> initial_history() {
+  std::array<Real, std::max<size_t>(history_size<Model>, 1)> values{};
+  for (size_t k = 0; k < history_size<Model>; ++k) values[k] = material_history<Model>::variables[k].initial;
+  return values;
+}
+
 // One particle with Eigen types (set-up, tests): the stress after a step, and ψ per
 // reference volume for the deformation F and stress s. `history`: the particle's history
-// variables (material_history.hpp), updated in place; unused by models without history.
+// variables (material_history.hpp), updated in place; unused by models without history;
+// null: the variables' initial values (a point fresh from the set-up).
 template <class Model>
 SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s,
                          Real* history = nullptr) {
   const Deformation<Real> d = make_deformation(L, F_new, dt);
   Real out[6];
   for (int c = 0; c < 6; ++c) out[c] = s[c];
-  update_material_stress(model, d, out, history);
+  auto initial = initial_history<Model>();
+  update_material_stress(model, d, out, history ? history : initial.data());
   SymTensor result;
   for (int c = 0; c < 6; ++c) result[c] = out[c];
   return result;
@@ -46,7 +59,8 @@ Real strain_energy_density(const Model& model, const Mat3& F, const SymTensor& s
   const Deformation<Real> d = make_deformation(Mat3::Zero(), F, 0);
   Real stress[6];
   for (int c = 0; c < 6; ++c) stress[c] = s[c];
-  return material_energy_density(model, d, stress, history);
+  const auto initial = initial_history<Model>();
+  return material_energy_density(model, d, stress, history ? history : initial.data());
 }
 
 }  // namespace latmpm::mpm

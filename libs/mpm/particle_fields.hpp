@@ -31,6 +31,8 @@ struct ParticleField {
   FieldBound bound = FieldBound::any;
   // An optional field the scene's run uses and the checkpoint lacks: what the user can do.
   const char* when_missing = "the scene's run uses it, the checkpoint's run did not";
+  // A field a checkpoint may lack (written before it existed): its values stay at `fill`.
+  bool fill_when_missing = false;
 };
 
 // Calls visit(field, values, fill) for every per-particle array of ps, in a fixed order;
@@ -57,7 +59,8 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
                       "grid.ddmp_stabilization = 0): resume with --set grid.ddmp_stabilization=0"},
         ps.ddmp_stabilization_stress, ParticleSymTensor(ParticleSymTensor::Zero()));
   for (auto& column : ps.history)
-    visit(ParticleField{column.name.c_str(), false, true}, column.values, column.initial);
+    visit(ParticleField{column.name.c_str(), false, true, FieldBound::any, "", column.initial_when_missing},
+          column.values, column.initial);
 }
 
 // Bytes the particle arrays hold (their capacity).

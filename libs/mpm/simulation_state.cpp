@@ -214,8 +214,12 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   const CheckpointReader particles_in = in.sub("particles");
   const size_t nb = bodies_.size(), nr = rigid_bodies_.size();
   Particles p = state_.particles;
-  for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
+  for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto& fill) {
     if (field.optional && values.empty()) return;  // the scene's run does not use it
+    if (field.fill_when_missing && !particles_in.has(field.name)) {
+      values.assign(n, fill);
+      return;
+    }
     if (field.optional && !particles_in.has(field.name))
       throw InputError(f.path(), g + "/particles/" + field.name, std::string("missing: ") + field.when_missing);
     values = particles_in.rows<typename std::decay_t<decltype(values)>::value_type>(field.name, n,

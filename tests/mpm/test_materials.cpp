@@ -92,6 +92,60 @@ TEST_CASE("The linear elastic energy density is half stress times strain", "[mpm
   CHECK(strain_energy_density(le, Mat3::Identity(), s) == Approx(1e5 * 1e5 / (2 * m.shear_modulus())));
 }
 
+TEST_CASE("The linear elastic energy is the stress work, also at finite strain", "[mpm][material]") {
+  // Uniaxial strain along z, stretch λ: D_zz = λ̇/λ, W = 0, so the rate form integrates to
+  // σ_zz = M ln λ (M = λ_Lamé + 2μ), J = λ, and the stress work per reference volume is
+  // ∫ J σ:D dt = ∫ M ln λ dλ = M (λ ln λ − λ + 1). The complementary energy ½ σ:C⁻¹σ J =
+  // ½ M λ (ln λ)² agrees only for small strains. The steps follow the solver's update
+  // F_new = (I + dt L) F_old, so the explicit scheme is within O(dt) of the exact path.
+  const auto m = params(MaterialKind::linear_elastic);
+  const auto le = LinearElastic::from(m, 1);
+  const Real M = m.p_wave_modulus();
+  const Real dt = 1e-5, speed = 40;  // |λ̇| = 40 /s: to λ = 0.6 in 1000 steps, then back
+  SymTensor s = SymTensor::Zero();
+  Real history[1] = {0};
+  Mat3 F = Mat3::Identity();
+  auto step = [&](Real stretch_rate) {
+    Mat3 L = Mat3::Zero();
+    L(2, 2) = stretch_rate / F(2, 2);
+    F = (Mat3::Identity() + dt * L) * F;
+    s = updated_stress(le, L, F, dt, s, history);
+  };
+  for (int n = 0; n < 1000; ++n) step(-speed);
+  const Real stretch = F(2, 2);
+  REQUIRE(stretch == Approx(0.6));
+  const Real work = M * (stretch * std::log(stretch) - stretch + 1);
+  const Real complementary = 0.5 * M * stretch * std::log(stretch) * std::log(stretch);
+  CHECK(s[2] == Approx(M * std::log(stretch)).epsilon(1e-3));
+  CHECK(strain_energy_density(le, F, s, history) == Approx(work).epsilon(1e-3));
+  // The complementary energy alone is 16 % short here.
+  CHECK(strain_energy_density(le, F, s) == Approx(0.5 * M * stretch * (s[2] / M) * (s[2] / M)).epsilon(1e-12));
+  CHECK(complementary < 0.85 * work);
+  // Unloaded along the same path, the work comes back: the energy returns to zero.
+  for (int n = 0; n < 1000; ++n) step(speed);
+  REQUIRE(F(2, 2) == Approx(1));
+  CHECK(std::abs(strain_energy_density(le, F, s, history)) < 1e-3 * work);
+}
+
+TEST_CASE("A rigid rotation of a stressed point does no work on it", "[mpm][material]") {
+  // D = 0: the stress work is zero, so the energy stays what it was, at any angle.
+  const auto le = LinearElastic::from(params(MaterialKind::linear_elastic), 1);
+  std::mt19937 rng(11);
+  SymTensor s;
+  for (int c = 0; c < 6; ++c) s[c] = std::uniform_real_distribution<Real>(-2e5, 2e5)(rng);
+  Real history[1] = {0};
+  const Real before = strain_energy_density(le, Mat3::Identity(), s, history);
+  Mat3 W = Mat3::Zero();
+  W(0, 1) = 3, W(1, 0) = -3, W(1, 2) = 1, W(2, 1) = -1;
+  const Real dt = 1e-4;
+  Mat3 F = Mat3::Identity();
+  for (int n = 0; n < 2000; ++n) {
+    F = (Mat3::Identity() + dt * W) * F;
+    s = updated_stress(le, W, F, dt, s, history);
+  }
+  CHECK(strain_energy_density(le, F, s, history) == Approx(before).epsilon(1e-12));
+}
+
 TEST_CASE("Wave speeds follow the P-wave modulus, mass scaling and compression", "[mpm][material]") {
   const auto m = params(MaterialKind::linear_elastic);
   const Real c2 = m.p_wave_modulus() / m.density;
