@@ -12,6 +12,7 @@ struct Deformation {
   T velocity_gradient[3][3];  // L_ab = ∂v_a/∂x_b over the step, 1/s
   T f_new[3][3];              // F at the end of the step, F_new = (I + dt L) F_old
   T jacobian;                 // J = det F_new
+  T jacobian_old;             // det F_old, J at the start of the step (energy of rate models)
   Real dt;                    // s
 };
 
@@ -28,12 +29,13 @@ inline T determinant(const T (&F)[3][3]) {
 template <class T>
 using Stress = T[6];
 
-// For one particle from Eigen types (set-up, tests).
+// For one particle from Eigen types (set-up, tests): F is F_new = (I + dt L) F_old.
 inline Deformation<Real> make_deformation(const Mat3& L, const Mat3& F, Real dt) {
   Deformation<Real> d;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) d.velocity_gradient[a][b] = L(a, b), d.f_new[a][b] = F(a, b);
   d.jacobian = F.determinant();
+  d.jacobian_old = d.jacobian / (Mat3::Identity() + dt * L).determinant();
   d.dt = dt;
   return d;
 }

@@ -6,13 +6,11 @@
 // complementary energy of the current stress) is the energy put in only for small strains.
 // Where points are squeezed or sheared far (a lattice folding under an impact: J < 0.8) it
 // misses part of the stress work by up to ~15 % of the energy put in, and the energy balance
-// shows that as a loss that comes back on unloading (docs/impact.md, "The energy balance").
-// So each point carries the stress work it has taken beyond that measure,
-//   δ = ∫ J σ:D dt − ½ σ:C⁻¹σ J   (per reference volume, J/m³; zero at the start),
-// the work integrated by the trapezoid rule over each step, and the model's energy is
-// ½ σ:C⁻¹σ J + δ = ∫ J σ:D dt: the stress power's integral, the work-conjugate energy of
-// the balance. For small strains δ stays at round-off (the trapezoid is exact for the
-// linear law), so the energy equals ½ σ:ε as before.
+// showed that as a loss that came back on unloading (docs/impact.md, "The energy balance").
+// So each point carries the stress work it has taken, w = ∫ J σ:D dt per reference volume
+// (J/m³), integrated by the trapezoid rule over each step; that is the model's energy, the
+// work-conjugate one of the balance. For small strains w = ½ σ:ε to round-off (the trapezoid
+// is exact for the linear law).
 #pragma once
 #include <array>
 
@@ -32,27 +30,25 @@ struct LinearElastic {
             m.density * mass_scaling};
   }
 
-  // The stress work beyond the complementary energy, δ above (material_history.hpp). A
-  // checkpoint written before it existed resumes with δ = 0, i.e. from the complementary
-  // energy the run reported until then.
-  static constexpr std::array<HistoryVariable, 1> history{{{"linear_elastic_work_excess", 0, true}}};
+  // The stress work w above (material_history.hpp). A checkpoint written before it existed
+  // lacks the column: each point's w is then its complementary energy (history_from_state),
+  // the energy that run reported.
+  static constexpr std::array<HistoryVariable, 1> history{{{"linear_elastic_stress_work", 0, true}}};
 
-  // The stress update with δ: the work J σ:D over the step by the trapezoid rule between
-  // the stress (and J) before and after, less the change of the complementary energy.
+  // The stress update with w: J σ:D over the step by the trapezoid rule between the stress
+  // (and J) before and after.
   template <class T>
-  void update_stress(const Deformation<T>& d, Stress<T>& s, T* work_excess) const {
-    const auto& L = d.velocity_gradient;
-    const Real dt = d.dt;
-    // J before the step: F_new = (I + dt L) F_old.
-    T step[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) step[r][c] = (r == c ? T{} + Real(1) : T{}) + dt * L[r][c];
-    const T j_old = d.jacobian / determinant(step);
-    const T power_old = j_old * stress_power_per_volume(L, s);
-    const T energy_old = complementary_energy_density(j_old, s);
+  void update_stress(const Deformation<T>& d, Stress<T>& s, T* work) const {
+    const T power_old = d.jacobian_old * stress_power_per_volume(d.velocity_gradient, s);
     update_stress(d, s);
-    const T power_new = d.jacobian * stress_power_per_volume(L, s);
-    work_excess[0] += Real(0.5) * dt * (power_old + power_new) - (complementary_energy_density(d.jacobian, s) - energy_old);
+    const T power_new = d.jacobian * stress_power_per_volume(d.velocity_gradient, s);
+    work[0] += Real(0.5) * d.dt * (power_old + power_new);
+  }
+
+  // w for a point whose history is unknown (a checkpoint without the column): the
+  // complementary energy of its stress, exact for small strains.
+  void history_from_state(const Deformation<Real>& d, const Stress<Real>& s, Real* work) const {
+    work[0] = strain_energy_density(d, s);
   }
 
   // The rate form alone (no energy bookkeeping).
@@ -86,27 +82,22 @@ struct LinearElastic {
   // Dilatational wave speed squared (λ + 2μ)/ρ, m²/s² (initial density: conservative).
   Real wave_speed_squared(Real /*jacobian*/) const { return (lambda + 2 * mu) / density; }
 
-  // Strain energy per reference volume, J/m³: the stress work ∫ J σ:D dt, i.e. the
-  // complementary energy plus the point's δ (above).
+  // Strain energy per reference volume, J/m³: the stress work w (above).
   template <class T>
-  T strain_energy_density(const Deformation<T>& d, const Stress<T>& s, const T* work_excess) const {
-    return complementary_energy_density(d.jacobian, s) + work_excess[0];
+  T strain_energy_density(const Deformation<T>&, const Stress<T>&, const T* work) const {
+    return work[0];
   }
 
-  // The complementary energy alone, ½ σ:ε J with ε = C⁻¹σ the elastic strain,
+  // The complementary energy, ½ σ:ε J with ε = C⁻¹σ the elastic strain,
   // σ:C⁻¹σ = ((1+ν) σ:σ − ν (tr σ)²)/E: the strain energy for small strains.
   template <class T>
   T strain_energy_density(const Deformation<T>& d, const Stress<T>& s) const {
-    return complementary_energy_density(d.jacobian, s);
+    const T tr = s[0] + s[1] + s[2];
+    const T ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+    return (Real(0.5) / young) * d.jacobian * ((1 + poisson) * ss - poisson * tr * tr);
   }
 
  private:
-  template <class T>
-  T complementary_energy_density(const T& jacobian, const Stress<T>& s) const {
-    const T tr = s[0] + s[1] + s[2];
-    const T ss = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    return (Real(0.5) / young) * jacobian * ((1 + poisson) * ss - poisson * tr * tr);
-  }
   // σ:D for symmetric σ in Voigt order (D = sym L).
   template <class T>
   static T stress_power_per_volume(const T (&L)[3][3], const Stress<T>& s) {

@@ -22,10 +22,10 @@ namespace latmpm::mpm {
 struct HistoryVariable {
   const char* name;  // unique across the models of a run; a particle column's name
   Real initial;      // value at the start of a run
-  // A checkpoint without the column (written before the variable existed) resumes with the
-  // initial value where that is a meaningful state (linear elastic's work excess); otherwise
-  // the checkpoint is refused.
-  bool initial_when_missing = false;
+  // The model derives it from a point's deformation and stress (history_from_state, below)
+  // at the start of a run, and where a checkpoint lacks the column (written before the
+  // variable existed); otherwise such a checkpoint is refused.
+  bool derived = false;
 };
 
 template <class Model, class = void>
@@ -72,6 +72,14 @@ inline T material_dissipation_density(const Model&, const T* history) {
     return T{};
 }
 
+// A model whose `derived` variables follow from a point's state provides
+//   void history_from_state(const Deformation<Real>&, const Stress<Real>&, Real* history) const
+// which sets those (linear elastic's stress work from the complementary energy).
+template <class Model, class = void>
+struct derives_history : std::false_type {};
+template <class Model>
+struct derives_history<Model, std::void_t<decltype(&Model::history_from_state)>> : std::true_type {};
+
 // Adds a column for each of the model's history variables to ps (one column per name:
 // two bodies of one model share them) and returns their indices in Particles::history, in
 // the model's order. Call before Particles::resize; the columns are sized with the others.
@@ -81,7 +89,7 @@ std::vector<uint32_t> declare_history(Particles& ps) {
   for (const HistoryVariable& v : material_history<Model>::variables) {
     uint32_t k = 0;
     while (k < ps.history.size() && ps.history[k].name != v.name) ++k;
-    if (k == ps.history.size()) ps.history.push_back({v.name, v.initial, std::vector<Real>(ps.size(), v.initial), v.initial_when_missing});
+    if (k == ps.history.size()) ps.history.push_back({v.name, v.initial, std::vector<Real>(ps.size(), v.initial), v.derived});
     columns.push_back(k);
   }
   return columns;

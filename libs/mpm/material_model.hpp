@@ -40,7 +40,8 @@ std::array<Real, std::max<size_t>(history_size<Model>, 1)> initial_history() {
 // One particle with Eigen types (set-up, tests): the stress after a step, and ψ per
 // reference volume for the deformation F and stress s. `history`: the particle's history
 // variables (material_history.hpp), updated in place; unused by models without history;
-// null: the variables' initial values (a point fresh from the set-up).
+// null: those of a point set up in that state (the initial values, the derived ones from
+// F and s, as the solver sets them before the first step).
 template <class Model>
 SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s,
                          Real* history = nullptr) {
@@ -59,8 +60,10 @@ Real strain_energy_density(const Model& model, const Mat3& F, const SymTensor& s
   const Deformation<Real> d = make_deformation(Mat3::Zero(), F, 0);
   Real stress[6];
   for (int c = 0; c < 6; ++c) stress[c] = s[c];
-  const auto initial = initial_history<Model>();
-  return material_energy_density(model, d, stress, history ? history : initial.data());
+  auto set_up = initial_history<Model>();
+  if constexpr (derives_history<Model>::value)
+    if (!history) model.history_from_state(d, stress, set_up.data());
+  return material_energy_density(model, d, stress, history ? history : set_up.data());
 }
 
 }  // namespace latmpm::mpm

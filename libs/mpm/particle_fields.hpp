@@ -31,8 +31,9 @@ struct ParticleField {
   FieldBound bound = FieldBound::any;
   // An optional field the scene's run uses and the checkpoint lacks: what the user can do.
   const char* when_missing = "the scene's run uses it, the checkpoint's run did not";
-  // A field a checkpoint may lack (written before it existed): its values stay at `fill`.
-  bool fill_when_missing = false;
+  // A field a checkpoint may lack (written before it existed): load_state derives it from
+  // the points' state (a material history variable's HistoryVariable::derived).
+  bool derived_when_missing = false;
 };
 
 // Calls visit(field, values, fill) for every per-particle array of ps, in a fixed order;
@@ -59,7 +60,7 @@ void for_each_particle_field(PS& ps, Visit&& visit) {
                       "grid.ddmp_stabilization = 0): resume with --set grid.ddmp_stabilization=0"},
         ps.ddmp_stabilization_stress, ParticleSymTensor(ParticleSymTensor::Zero()));
   for (auto& column : ps.history)
-    visit(ParticleField{column.name.c_str(), false, true, FieldBound::any, "", column.initial_when_missing},
+    visit(ParticleField{column.name.c_str(), false, true, FieldBound::any, "", column.derived},
           column.values, column.initial);
 }
 

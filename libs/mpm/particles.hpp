@@ -16,7 +16,7 @@ struct HistoryColumn {
   std::string name;
   Real initial = 0;
   std::vector<Real> values;
-  bool initial_when_missing = false;  // HistoryVariable::initial_when_missing
+  bool derived = false;  // HistoryVariable::derived
 };
 
 // A CPDI1 particle's reference domain (shape_cpdi.hpp), column α for vertex α: rows 0–2

@@ -214,10 +214,11 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   const CheckpointReader particles_in = in.sub("particles");
   const size_t nb = bodies_.size(), nr = rigid_bodies_.size();
   Particles p = state_.particles;
-  for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto& fill) {
+  std::vector<std::string> derived;  // history columns the checkpoint lacks, derived below
+  for_each_particle_field(p, [&](const ParticleField& field, auto& values, const auto&) {
     if (field.optional && values.empty()) return;  // the scene's run does not use it
-    if (field.fill_when_missing && !particles_in.has(field.name)) {
-      values.assign(n, fill);
+    if (field.derived_when_missing && !particles_in.has(field.name)) {
+      derived.push_back(field.name);
       return;
     }
     if (field.optional && !particles_in.has(field.name))
@@ -268,6 +269,7 @@ void Simulation::load_state(const Hdf5File& f, const std::string& g) {
   // Several processes: each keeps its share of the buckets, as they are (no re-sort).
   context_->domain.distribute_buckets(p, tables);
   state_.particles = std::move(p);
+  if (!derived.empty()) derive_history_from_state(state_, *context_, derived);
   context_->fixed_body_nodes.ready = false;  // from the restored positions
   state_.buckets.restore(std::move(tables.buckets), std::move(tables.runs));
   state_.needs_sort = needs_sort;

@@ -3,6 +3,7 @@
 // contact, and the carried speeds and energies the stable time step uses.
 #include "mpm/step_stages.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -280,7 +281,34 @@ CarriedState carried_from_particles(const SolverState& s, const StepContext& c) 
   return carried;
 }
 
+void derive_history_from_state(SolverState& s, const StepContext& c, const std::vector<std::string>& names) {
+  Particles& ps = s.particles;
+  for (size_t p = 0; p < ps.size(); ++p) {
+    const BodyInfo& body = c.body_info[size_t(ps.body[p])];
+    if (body.role != BodyRole::deformable) continue;
+    std::visit([&](const auto& m) {
+      using Model = std::decay_t<decltype(m)>;
+      if constexpr (derives_history<Model>::value) {
+        constexpr auto& variables = material_history<Model>::variables;
+        Real history[variables.size()];
+        for (size_t k = 0; k < variables.size(); ++k) history[k] = ps.history[body.history_columns[k]].values[p];
+        Real stress[6];
+        for (int k = 0; k < 6; ++k) stress[k] = ps.stress[p][k];
+        m.history_from_state(make_deformation(Mat3::Zero(), ps.deformation[p].cast<Real>(), 0), stress, history);
+        for (size_t k = 0; k < variables.size(); ++k) {
+          HistoryColumn& column = ps.history[body.history_columns[k]];
+          const bool named = names.empty() || std::find(names.begin(), names.end(), column.name) != names.end();
+          if (variables[k].derived && named) column.values[p] = history[k];
+        }
+      }
+    }, body.model);
+  }
+}
+
 void refresh_carried(SolverState& s, StepContext& c) {
+  // Points set up with a stress before the first step (Simulation::mutable_particles) hold
+  // its energy from the start.
+  if (s.diagnostics.step == 0) derive_history_from_state(s, c, {});
   s.carried = carried_from_particles(s, c);
   c.refresh_needed = false;
 }

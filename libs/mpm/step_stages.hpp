@@ -144,6 +144,10 @@ Real ddmp_small_mass(const SolverState& s, StepContext& c);
 Vec3 centre_of_mass(const SolverState& s, const StepContext& c, size_t body);
 // ψ of deformable particle p (J/m³ of reference volume), with its history if its model has one.
 Real energy_density(const SolverState& s, const StepContext& c, size_t p);
+// Sets the history columns named (all that are derived when `names` is empty) of every
+// deformable point from its deformation and stress (material_history.hpp, derives_history):
+// at the start of a run and for a checkpoint without those columns.
+void derive_history_from_state(SolverState& s, const StepContext& c, const std::vector<std::string>& names);
 // "the fastest particle: ID of body 'NAME' at (x, y, z) m, v m/s" (deformable bodies, the
 // whole domain's: the same words on every process, collective), for messages that stop a run
 // whose trouble has no one particle of its own (the energy checks).

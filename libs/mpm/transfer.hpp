@@ -553,6 +553,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   F[r][c] = f_old[r][c] + dt * (grad_v[r][0] * f_old[0][c] + grad_v[r][1] * f_old[1][c] +
                                                 grad_v[r][2] * f_old[2][c]);
               d.jacobian = determinant(F);
+              d.jacobian_old = determinant(f_old);  // dropped by the compiler where no model reads it
               update_material_stress(material, d, s, history);
               const Pack energy = volume0 * material_energy_density(material, d, s, history);
               strain += energy;

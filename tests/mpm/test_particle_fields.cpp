@@ -69,7 +69,7 @@ TEST_CASE("A history variable is declared once and sized, filled and sorted with
   REQUIRE(columns == std::vector<uint32_t>{0});
   // A second body of the same model shares the column.
   CHECK(declare_history<ToyVolumetricMemory>(ps) == columns);
-  CHECK(declare_history<LinearElastic>(ps).empty());
+  CHECK(declare_history<NeoHookean>(ps).empty());
   ps.resize(5);
   REQUIRE(ps.history.size() == 1);
   CHECK(ps.history[0].values == std::vector<Real>(5, 0.0));
