@@ -28,7 +28,7 @@ struct StepDiagnostics {
   std::vector<Vec3> reaction;
 
   Real kinetic_energy = 0;  // ½ Σ m v² over deformable points, J
-  Real strain_energy = 0;   // Σ V0 ψ over deformable points, J (linear elastic: ½ σ:ε V)
+  Real strain_energy = 0;   // Σ V0 ψ over deformable points, J (linear elastic: its stress work)
   // Energy the materials dissipated since the start, J: Σ V0 × the plastic work per
   // reference volume of J2 points (Paper B Eq. 13's Σ Δα y(α)); zero for elastic models.
   Real plastic_dissipation = 0;

@@ -40,8 +40,9 @@ std::array<Real, std::max<size_t>(history_size<Model>, 1)> initial_history() {
 // One particle with Eigen types (set-up, tests): the stress after a step, and ψ per
 // reference volume for the deformation F and stress s. `history`: the particle's history
 // variables (material_history.hpp), updated in place; unused by models without history;
-// null: those of a point set up in that state (the initial values, the derived ones from
-// F and s, as the solver sets them before the first step).
+// null: updated_stress starts from the initial values (and discards them), the energy takes
+// those of a point set up in that state (the derived ones from F and s, as the solver sets
+// them before the first step).
 template <class Model>
 SymTensor updated_stress(const Model& model, const Mat3& L, const Mat3& F_new, Real dt, const SymTensor& s,
                          Real* history = nullptr) {

@@ -123,9 +123,12 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
     const auto steps = output.rows<int64_t>("frame_steps", names.size(), {0, double(sim.step_count())});
     const double all_points = sim.domain().reduce_sum(double(sim.particles().size()));  // each process holds its share
     const auto points = output.rows<int64_t>("frame_points", names.size(), {0, all_points});
-    // The frames' extra scalars are the run's material history columns, the same in every frame.
+    // The frames' extra scalars are the run's material history columns, the same in every
+    // frame: those its checkpoint holds (a column it lacks, derived on loading, was not in
+    // the earlier run's snapshots either: Simulation::load_state).
     std::vector<std::string> history;
-    for (const auto& column : sim.particles().history) history.push_back(column.name);
+    for (const auto& column : sim.particles().history)
+      if (file.exists("/state/particles/" + column.name)) history.push_back(column.name);
     for (size_t i = 0; i < names.size(); ++i)
       kept_frames.push_back({names[i], times[i], steps[i], size_t(points[i]), history});
     wall_before = output.attribute("wall_seconds", non_negative);

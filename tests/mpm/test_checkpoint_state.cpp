@@ -125,6 +125,7 @@ TEST_CASE("A checkpoint without the linear elastic stress work resumes from the 
   auto first = make();
   for (int n = 0; n < 200; ++n) first->step();
   const Particles& saved = first->particles();
+  REQUIRE(saved.history_column(column) != nullptr);
   const LinearElastic model = LinearElastic::from(material, 1);
   Real work = 0, complementary = 0;
   for (size_t p = 0; p < saved.size(); ++p) {
