@@ -165,6 +165,37 @@ TEST_CASE("A checkpoint without the linear elastic stress work resumes from the 
         Approx(first->last_diagnostics().strain_energy - (work - complementary)).epsilon(1e-12));
 }
 
+TEST_CASE("A checkpoint without a history column that cannot be derived is refused, naming it",
+          "[mpm][checkpoint][material]") {
+  // J2's plastic strain is path history: no state gives it back (unlike the linear elastic
+  // stress work above), so such a checkpoint must not resume.
+  const Real h = 1e-3;
+  PointSet points = empty_point_set(h, 2);
+  add_points(points, Eigen::Vector3d(-2 * h, -2 * h, 0), Eigen::Vector3d(2 * h, 2 * h, 4 * h), "block");
+  Settings s;
+  s.cell_size = h;
+  s.gravity = Vec3(0, 0, -9.81);
+  const std::vector<BodySettings> bodies = {deformable("block", j2_material(steel_42crmo4_400c(), 7850))};
+  Simulation saved(points, bodies, s);
+  for (int n = 0; n < 3; ++n) saved.step();
+  const latmpm::test::ScratchDir scratch("checkpoint-j2-history");
+  const std::string path = scratch / "state.h5";
+  {
+    Hdf5File file(path, Hdf5File::Mode::create);
+    saved.save_state(file, "/state");
+  }
+  {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    CHECK(H5Ldelete(file, "/state/particles/j2_alpha", H5P_DEFAULT) >= 0);
+    H5Fclose(file);
+  }
+  Simulation restored(points, bodies, s);
+  Hdf5File file(path, Hdf5File::Mode::read);
+  CHECK_THROWS_AS(restored.load_state(file, "/state"), InputError);
+  CHECK_THROWS_WITH(restored.load_state(file, "/state"), Catch::Contains("j2_alpha") && Catch::Contains("missing"));
+}
+
 TEST_CASE("A checkpoint whose buckets do not hold each particle once, in bucket order, is refused",
           "[mpm][checkpoint]") {
   // Several MPI processes cut the bucket table and keep their buckets' particles by its
