@@ -19,6 +19,37 @@ using namespace latmpm;
 using namespace latmpm::mpm;
 using namespace latmpm::mpm::test;
 
+namespace {
+// A block of points (cells of 1 mm) of one material under gravity, three steps on, saved as
+// `path`: the scene of the tests that refuse a checkpoint.
+struct SavedBlock {
+  PointSet points;
+  Settings settings;
+  std::vector<BodySettings> bodies;
+};
+SavedBlock saved_block(const MaterialParameters& material, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                       const std::string& path) {
+  const Real h = 1e-3;
+  SavedBlock block{empty_point_set(h, 2), Settings{}, {deformable("block", material)}};
+  add_points(block.points, h * lo, h * hi, "block");
+  block.settings.cell_size = h;
+  block.settings.gravity = Vec3(0, 0, -9.81);
+  Simulation saved(block.points, block.bodies, block.settings);
+  for (int n = 0; n < 3; ++n) saved.step();
+  Hdf5File file(path, Hdf5File::Mode::create);
+  saved.save_state(file, "/state");
+  return block;
+}
+
+// Deletes a dataset from a checkpoint, as a version that did not write it would have left it.
+void remove_dataset(const std::string& path, const std::string& dataset) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  CHECK(H5Ldelete(file, dataset.c_str(), H5P_DEFAULT) >= 0);
+  H5Fclose(file);
+}
+}  // namespace
+
 TEST_CASE("A simulation restored from its saved state continues bit for bit", "[mpm][checkpoint]") {
   const auto shape = GENERATE(ShapeFunctionKind::ugimp, ShapeFunctionKind::ddmp);
   // The reference-map filter keeps where every point started (Particles::reference_position),
@@ -144,12 +175,7 @@ TEST_CASE("A checkpoint without the linear elastic stress work resumes from the 
     Hdf5File file(path, Hdf5File::Mode::create);
     first->save_state(file, "/state");
   }
-  {  // as an older version wrote it
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    REQUIRE(file >= 0);
-    CHECK(H5Ldelete(file, ("/state/particles/" + column).c_str(), H5P_DEFAULT) >= 0);
-    H5Fclose(file);
-  }
+  remove_dataset(path, "/state/particles/" + column);  // as an older version wrote it
   auto second = make();
   {
     Hdf5File file(path, Hdf5File::Mode::read);
@@ -169,28 +195,11 @@ TEST_CASE("A checkpoint without a history column that cannot be derived is refus
           "[mpm][checkpoint][material]") {
   // J2's plastic strain is path history: no state gives it back (unlike the linear elastic
   // stress work above), so such a checkpoint must not resume.
-  const Real h = 1e-3;
-  PointSet points = empty_point_set(h, 2);
-  add_points(points, Eigen::Vector3d(-2 * h, -2 * h, 0), Eigen::Vector3d(2 * h, 2 * h, 4 * h), "block");
-  Settings s;
-  s.cell_size = h;
-  s.gravity = Vec3(0, 0, -9.81);
-  const std::vector<BodySettings> bodies = {deformable("block", j2_material(steel_42crmo4_400c(), 7850))};
-  Simulation saved(points, bodies, s);
-  for (int n = 0; n < 3; ++n) saved.step();
   const latmpm::test::ScratchDir scratch("checkpoint-j2-history");
   const std::string path = scratch / "state.h5";
-  {
-    Hdf5File file(path, Hdf5File::Mode::create);
-    saved.save_state(file, "/state");
-  }
-  {
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    REQUIRE(file >= 0);
-    CHECK(H5Ldelete(file, "/state/particles/j2_alpha", H5P_DEFAULT) >= 0);
-    H5Fclose(file);
-  }
-  Simulation restored(points, bodies, s);
+  const SavedBlock block = saved_block(j2_material(steel_42crmo4_400c(), 7850), {-2, -2, 0}, {2, 2, 4}, path);
+  remove_dataset(path, "/state/particles/j2_alpha");
+  Simulation restored(block.points, block.bodies, block.settings);
   Hdf5File file(path, Hdf5File::Mode::read);
   CHECK_THROWS_AS(restored.load_state(file, "/state"), InputError);
   CHECK_THROWS_WITH(restored.load_state(file, "/state"), Catch::Contains("j2_alpha") && Catch::Contains("missing"));
@@ -201,22 +210,10 @@ TEST_CASE("A checkpoint whose buckets do not hold each particle once, in bucket 
   // Several MPI processes cut the bucket table and keep their buckets' particles by its
   // ranges: a table that tiles the particles but out of order, or whose runs stray into the
   // next bucket, would give a particle to two processes or to none (docs/cluster.md).
-  const Real h = 1e-3;
-  PointSet points = empty_point_set(h, 2);
-  add_points(points, Eigen::Vector3d(-5 * h, -3 * h, 0), Eigen::Vector3d(6 * h, 4 * h, 10 * h), "block");
-  Settings s;
-  s.cell_size = h;
-  s.gravity = Vec3(0, 0, -9.81);
-  const std::vector<BodySettings> bodies = {deformable("block", elastic(1e6, 0.3, 1000))};
-  Simulation saved(points, bodies, s);
-  for (int n = 0; n < 3; ++n) saved.step();
   const latmpm::test::ScratchDir scratch("checkpoint-buckets");
   const std::string path = scratch / "state.h5";
   const std::string table = "/state/buckets/buckets";
-  {
-    Hdf5File file(path, Hdf5File::Mode::create);
-    saved.save_state(file, "/state");
-  }
+  const auto [points, s, bodies] = saved_block(elastic(1e6, 0.3, 1000), {-5, -3, 0}, {6, 4, 10}, path);
   std::vector<size_t> dims;
   const std::vector<int64_t> rows = Hdf5File(path, Hdf5File::Mode::read).read_int64(table, &dims);
   REQUIRE(dims.size() == 2);
