@@ -20,6 +20,25 @@ using namespace latmpm::mpm;
 using namespace latmpm::mpm::test;
 
 namespace {
+// A free rigid box of 10 g moving down at `speed` (m/s) onto the scene below it.
+RigidBodySettings falling_flyer(const Vec3& box_min, const Vec3& box_max, Real speed) {
+  RigidBodySettings flyer;
+  flyer.name = "flyer";
+  flyer.box_min = box_min;
+  flyer.box_max = box_max;
+  flyer.motion = RigidMotion::free;
+  flyer.velocity = Vec3(0, 0, -speed);
+  flyer.mass = 0.01;
+  return flyer;
+}
+
+std::unique_ptr<Simulation> simulation_with(const PointSet& points, const std::vector<BodySettings>& bodies,
+                                            const Settings& settings, const RigidBodySettings& rigid_body) {
+  auto sim = std::make_unique<Simulation>(points, bodies, settings);
+  sim->add_rigid_body(rigid_body);
+  return sim;
+}
+
 // A block of points (cells of 1 mm) of one material under gravity, three steps on, saved as
 // `path`: the scene of the tests that refuse a checkpoint.
 struct SavedBlock {
@@ -74,18 +93,8 @@ TEST_CASE("A simulation restored from its saved state continues bit for bit", "[
       deformable("block", filter == NullSpaceFilter::none ? elastic(1e6, 0.3, 1000)
                                                           : elastic(1e6, 0.3, 1000, MaterialKind::neo_hookean)),
                                             rigid("base", BodyRole::fixed, Vec3::Zero(), 1000)};
-  RigidBodySettings flyer;
-  flyer.name = "flyer";
-  flyer.box_min = Vec3(-5 * h, -3 * h, 10 * h);
-  flyer.box_max = Vec3(6 * h, 4 * h, 12 * h);
-  flyer.motion = RigidMotion::free;
-  flyer.velocity = Vec3(0, 0, -2);
-  flyer.mass = 0.01;
-  auto make = [&] {
-    auto sim = std::make_unique<Simulation>(points, bodies, s);
-    sim->add_rigid_body(flyer);
-    return sim;
-  };
+  const RigidBodySettings flyer = falling_flyer(Vec3(-5 * h, -3 * h, 10 * h), Vec3(6 * h, 4 * h, 12 * h), 2);
+  auto make = [&] { return simulation_with(points, bodies, s, flyer); };
   auto state_of = [](const Simulation& sim) {
     std::vector<Real> v;
     const Particles& ps = sim.particles();
@@ -140,18 +149,9 @@ TEST_CASE("A checkpoint without the linear elastic stress work resumes from the 
   const MaterialParameters material = elastic(1e6, 0.3, 1000);
   const std::vector<BodySettings> bodies = {deformable("block", material),
                                             rigid("base", BodyRole::fixed, Vec3::Zero(), 1000)};
-  RigidBodySettings flyer;
-  flyer.name = "flyer";
-  flyer.box_min = Vec3(-3 * h, -3 * h, 8 * h);
-  flyer.box_max = Vec3(3 * h, 3 * h, 10 * h);
-  flyer.motion = RigidMotion::free;
-  flyer.velocity = Vec3(0, 0, -20);  // squeezes the block by tens of per cent
-  flyer.mass = 0.01;
-  auto make = [&] {
-    auto sim = std::make_unique<Simulation>(points, bodies, s);
-    sim->add_rigid_body(flyer);
-    return sim;
-  };
+  // 20 m/s squeezes the block by tens of per cent.
+  const RigidBodySettings flyer = falling_flyer(Vec3(-3 * h, -3 * h, 8 * h), Vec3(3 * h, 3 * h, 10 * h), 20);
+  auto make = [&] { return simulation_with(points, bodies, s, flyer); };
   const std::string column = "linear_elastic_stress_work";
   auto first = make();
   for (int n = 0; n < 200; ++n) first->step();
