@@ -275,6 +275,25 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
   echo
   echo "Strut–strut grid contact (\`[contact]\`, strut groups from \`latmpm-voxelize --strut-groups\`):"
   echo "method, tests and the QUICK lattice past 10 mm with and without it in docs/contact.md."
+  # The lattice-compression case rerun with contact (pipelines/lattice-compression/contact-paper.sh):
+  # its latmpm-post table of the two runs, labels single and contact.
+  m="results/lattice-compression/$mode-contact/post/metrics.csv" curves="results/lattice-compression/$mode-contact/post/curves"
+  if [ -f "$m" ]; then
+    echo
+    echo "One lattice of the table above with strut contact (8 strut colours, μ = 0.3, the top plate bonded;"
+    echo "\`bash pipelines/lattice-compression/contact-paper.sh BIN CASE results/lattice-compression/$mode-contact\`),"
+    echo "against the same case with one velocity field: the mean load over ±0.25 mm of travel, and the"
+    echo "densification onset by the rule above."
+    echo
+    echo "| run | initial stiffness (N/mm) | plateau (N) | load at 10 / 15 / 20 / 22.5 / 25 mm (N) | densification (mm) | strain | status |"
+    echo "|---|---|---|---|---|---|---|"
+    for l in single contact; do
+      loads=""
+      for u in 10 15 20 22.5 25; do loads="$loads${loads:+ / }$(num "$(window_load "$curves/$l.load_displacement.csv" "$u" 0.25 2>/dev/null || true)")"; done
+      s=$(post_metric "$m" "$l" densification_strain)
+      echo "| $l | $(num "$(post_metric "$m" "$l" initial_stiffness)") | $(num "$(post_metric "$m" "$l" plateau_load)") | $loads | $(num "$(post_metric "$m" "$l" densification_displacement)") | $(if [ -n "$s" ]; then num "$s"; else echo "not reached"; fi) | $(post_metric "$m" "$l" status) |"
+    done
+  fi
 
   echo
   echo "## Cost of every run"
