@@ -280,8 +280,9 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
   m="results/lattice-compression/$mode-contact/post/metrics.csv" curves="results/lattice-compression/$mode-contact/post/curves"
   if [ -f "$m" ]; then
     echo
-    echo "One lattice of the table above with strut contact (8 strut colours, μ = 0.3, the top plate bonded;"
-    echo "\`bash pipelines/lattice-compression/contact-paper.sh BIN CASE results/lattice-compression/$mode-contact\`),"
+    contact_case=$(basename "$(post_metric "$m" single run_dir)" | sed 's/^run-//')
+    echo "$contact_case of the table above with strut contact (8 strut colours, μ = 0.3, the top plate bonded;"
+    echo "\`bash pipelines/lattice-compression/contact-paper.sh BIN $contact_case results/lattice-compression/$mode-contact\`),"
     echo "against the same case with one velocity field: the mean load over ±0.25 mm of travel, and the"
     echo "densification onset by the rule above."
     echo
