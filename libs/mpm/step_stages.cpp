@@ -283,6 +283,12 @@ CarriedState carried_from_particles(const SolverState& s, const StepContext& c) 
 
 void derive_history_from_state(SolverState& s, const StepContext& c, const std::vector<std::string>& names) {
   Particles& ps = s.particles;
+  // The columns to set, decided once: derived, and named (or no names given).
+  std::vector<bool> wanted(ps.history.size());
+  for (size_t k = 0; k < ps.history.size(); ++k)
+    wanted[k] = ps.history[k].derived &&
+                (names.empty() || std::find(names.begin(), names.end(), ps.history[k].name) != names.end());
+  if (std::find(wanted.begin(), wanted.end(), true) == wanted.end()) return;
   for (size_t p = 0; p < ps.size(); ++p) {
     const BodyInfo& body = c.body_info[size_t(ps.body[p])];
     if (body.role != BodyRole::deformable) continue;
@@ -295,11 +301,8 @@ void derive_history_from_state(SolverState& s, const StepContext& c, const std::
         Real stress[6];
         for (int k = 0; k < 6; ++k) stress[k] = ps.stress[p][k];
         m.history_from_state(make_deformation(Mat3::Zero(), ps.deformation[p].cast<Real>(), 0), stress, history);
-        for (size_t k = 0; k < variables.size(); ++k) {
-          HistoryColumn& column = ps.history[body.history_columns[k]];
-          const bool named = names.empty() || std::find(names.begin(), names.end(), column.name) != names.end();
-          if (variables[k].derived && named) column.values[p] = history[k];
-        }
+        for (size_t k = 0; k < variables.size(); ++k)
+          if (wanted[body.history_columns[k]]) ps.history[body.history_columns[k]].values[p] = history[k];
       }
     }, body.model);
   }
