@@ -25,10 +25,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <type_traits>
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
+#include "mpm/simd.hpp"
 
 namespace latmpm::mpm {
 
@@ -205,17 +205,6 @@ void for_each_bit(uint64_t mask, Fn&& fn) {
     mask &= mask - 1;
   }
 }
-// Calls f(std::integral_constant<int, count>{}) for the lane counts the schemes move (3, 4, 6, 7).
-template <class F>
-void with_lane_count(int count, F&& f) {
-  switch (count) {
-    case 3: return f(std::integral_constant<int, 3>{});
-    case 4: return f(std::integral_constant<int, 4>{});
-    case 6: return f(std::integral_constant<int, 6>{});
-    case 7: return f(std::integral_constant<int, 7>{});
-  }
-  std::abort();  // a scheme moving another count of lanes: add it above
-}
 inline int block_colour(const SparseGrid::Coord& c) {
   const auto mod3 = [](int v) { return ((v % 3) + 3) % 3; };
   return (mod3(c[0]) * 3 + mod3(c[1])) * 3 + mod3(c[2]);
@@ -314,24 +303,23 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
       for (int c = 0; c < count; ++c) staged[c] = node[first + c], node[first + c] = 0;
     });
   });
-  with_lane_count(count, [&](auto lanes_moved) {
-    constexpr int Count = decltype(lanes_moved)::value;
-    Real* lanes = grid.block(0) + first;
-    for (const auto& colour : nv.handing_by_colour)
-      tbb::parallel_for(size_t(0), colour.size(), [&](size_t ci) {
-        const size_t b = colour[ci];
-        for_each_bit(nv.handing[b], [&](int n) {
-          const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-          Real staged[Count];
-          std::copy_n(nv.node(b, n), Count, staged);
-          const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
-          for (const DdmpDistribution::Share& share : d.shares) {  // sizeable, so active
-            Real* node = lanes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count;
-            for (int q = 0; q < Count; ++q) node[q] = std::fma(share.C, staged[q], node[q]);
-          }
-        });
+  // The source's lanes in their places of a node, the others zero; only [first, first + count)
+  // of a receiver change (one masked multiply-add a share, num::fma_into_node).
+  const unsigned moved = ((1u << count) - 1) << first;
+  Real* nodes = grid.block(0);
+  for (const auto& colour : nv.handing_by_colour)
+    tbb::parallel_for(size_t(0), colour.size(), [&](size_t ci) {
+      const size_t b = colour[ci];
+      for_each_bit(nv.handing[b], [&](int n) {
+        const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+        Pack source{};
+        for (int c = 0; c < count; ++c) source[first + c] = nv.node(b, n)[c];
+        const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
+        for (const DdmpDistribution::Share& share : d.shares)  // sizeable, so active
+          num::fma_into_node(nodes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count,
+                             share.C, source, moved);
       });
-  });
+    });
 }
 
 // Lanes [first, first + count) of every small-mass node from its sizeable neighbours,
@@ -339,20 +327,17 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
 // remapped velocity).
 inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  with_lane_count(count, [&](auto lanes_read) {
-    constexpr int Count = decltype(lanes_read)::value;
-    const Real* lanes = grid.block(0) + first;
-    tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-      for_each_bit(nv.handing[b], [&](int n) {
-        const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-        const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
-        Real sum[Count] = {};
-        for (const DdmpDistribution::Share& share : d.shares) {  // sizeable, so active
-          const Real* other = lanes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count;
-          for (int q = 0; q < Count; ++q) sum[q] = std::fma(share.C, other[q], sum[q]);
-        }
-        std::copy_n(sum, Count, nv.node(b, n));
-      });
+  // Whole nodes summed (one multiply-add a share, num::fma_node); lanes [first, first + count)
+  // of the sum kept.
+  const Real* nodes = grid.block(0);
+  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    for_each_bit(nv.handing[b], [&](int n) {
+      const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+      const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
+      Pack sum{};
+      for (const DdmpDistribution::Share& share : d.shares)  // sizeable, so active
+        sum = num::fma_node(share.C, nodes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count, sum);
+      for (int c = 0; c < count; ++c) nv.node(b, n)[c] = sum[first + c];
     });
   });
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
