@@ -91,18 +91,43 @@ struct NeighbourPatternHash {
 using Fit = std::array<Real, 4>;
 }  // namespace ddmp_grid_detail
 
-// A pattern's fit and its shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours, in
-// neighbour_offsets order: the hand-on and the read-back visit these, not all 124 offsets.
+// A pattern's fit and its shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the
+// hand-on and the read-back visit these, not all 124 offsets (for_each_share). The receivers
+// are the pattern's sizeable bits and the shares their coefficients in bit order (the
+// neighbour_offsets order), 8 bytes a share: a paper-size lattice has ≈ 54,000 patterns.
 struct DdmpDistribution {
-  struct Share {
-    int x, y, z;  // d = i − l
-    Real C;
-  };
   ddmp_grid_detail::Fit fit;
-  std::vector<Share> shares;
+  ddmp_grid_detail::NeighbourPattern receivers;
+  std::vector<Real> shares;
 };
 
 namespace ddmp_grid_detail {
+
+// The offset d of bit box_bit(d) of a neighbourhood pattern.
+struct BoxOffset {
+  int8_t x, y, z;
+};
+inline const std::array<BoxOffset, 125>& box_offsets() {
+  static const auto table = [] {
+    std::array<BoxOffset, 125> out{};
+    for (int x = -reach; x <= reach; ++x)
+      for (int y = -reach; y <= reach; ++y)
+        for (int z = -reach; z <= reach; ++z) out[size_t(box_bit(x, y, z))] = {int8_t(x), int8_t(y), int8_t(z)};
+    return out;
+  }();
+  return table;
+}
+// Calls fn(x, y, z, C_li) for the shares of a distribution, in bit order.
+template <class Fn>
+void for_each_share(const DdmpDistribution& d, Fn&& fn) {
+  const auto& offsets = box_offsets();
+  const Real* C = d.shares.data();
+  for (int word = 0; word < 2; ++word)
+    for (uint64_t bits = uint64_t(d.receivers.bits >> (64 * word)); bits; bits &= bits - 1) {
+      const BoxOffset& o = offsets[size_t(__builtin_ctzll(bits) + 64 * word)];
+      fn(int(o.x), int(o.y), int(o.z), *C++);
+    }
+}
 
 // C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
 inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
@@ -148,9 +173,12 @@ inline DistributionMemo& distribution_memo() {
 }
 // A crushed lattice keeps making new patterns: the QUICK DDMP impact had gathered 1.8 GB of
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
-// (find_ddmp_small_mass_nodes, before any pointer into it is taken): at most ≈ 50 MB of
-// shares (124 × 24 B each). One memo for the process: Simulations step one at a time.
-inline constexpr size_t distribution_memo_limit = size_t(1) << 14;
+// (find_ddmp_small_mass_nodes, before any pointer into it is taken). A step's own patterns
+// must fit, or every step refits them all: the paper-size T2P30 lattice starts with ≈ 54,000
+// (2026-11-28; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.5 kB a pattern
+// (≈ 50 shares of 8 B, the map's node) the limit is ≈ 70 MB, 1.1 kB at most (124 shares).
+// One memo for the process: Simulations step one at a time.
+inline constexpr size_t distribution_memo_limit = size_t(1) << 17;
 
 // Bumped whenever the memo is emptied: the threads' caches of it (below) are then stale.
 inline std::atomic<uint64_t>& distribution_memo_generation() {
@@ -169,9 +197,11 @@ inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern
   DdmpDistribution d;
   d.fit = fit_distribution(pattern);
   if (d.fit[0] != 0)
-    for (const Offset& off : neighbour_offsets())
-      if (pattern.sizeable(off))
-        d.shares.push_back({off.x, off.y, off.z, distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight)});
+    for (const Offset& off : neighbour_offsets())  // in bit order, as for_each_share reads them
+      if (pattern.sizeable(off)) {
+        d.receivers.bits |= PatternBits(1) << box_bit(off.x, off.y, off.z);
+        d.shares.push_back(distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight));
+      }
   return memo.insert({pattern, std::move(d)}).first->second;
 }
 
@@ -344,9 +374,9 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
         Pack source{};
         for (int c = 0; c < count; ++c) source[first + c] = nv.node(b, n)[c];
         const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
-        for (const DdmpDistribution::Share& share : d.shares)  // sizeable, so active
-          num::fma_into_node(nodes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count,
-                             share.C, source, moved);
+        for_each_share(d, [&](int x, int y, int z, Real C) {  // sizeable, so active
+          num::fma_into_node(nodes + node_index_near(nv, b, i + x, j + y, k + z) * lane::count, C, source, moved);
+        });
       });
     });
 }
@@ -364,8 +394,9 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count,
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
       const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
       Pack sum{};
-      for (const DdmpDistribution::Share& share : d.shares)  // sizeable, so active
-        sum = num::fma_node(share.C, nodes + node_index_near(nv, b, i + share.x, j + share.y, k + share.z) * lane::count, sum);
+      for_each_share(d, [&](int x, int y, int z, Real C) {  // sizeable, so active
+        sum = num::fma_node(C, nodes + node_index_near(nv, b, i + x, j + y, k + z) * lane::count, sum);
+      });
       for (int c = 0; c < count; ++c) nv.node(b, n)[c] = sum[first + c];
     });
   });
