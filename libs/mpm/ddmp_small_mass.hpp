@@ -103,30 +103,49 @@ struct DdmpDistribution {
 
 namespace ddmp_grid_detail {
 
-// The offset d of bit box_bit(d) of a neighbourhood pattern.
-struct BoxOffset {
-  int8_t x, y, z;
+// The nodes of a block and its halo of `reach` nodes: their indices in the grid's node order
+// (block · 64 + node), halo node (a, b, c) at a · 64 + b · 8 + c for local (a, b, c) − reach.
+// Built once per block by the hand-on and the read-back, so that a share's receiver is one
+// look-up. Entries in inactive blocks are meaningless (no share reaches them: sizeable nodes
+// are active).
+struct BlockNodeIndex {
+  static constexpr int width = 8;
+  static_assert(width == bw + 2 * reach, "the halo of a block is 8 nodes a side");
+  uint32_t node[width * width * width];
+  static int at(int i, int j, int k) { return ((i + reach) * width + (j + reach)) * width + (k + reach); }
 };
-inline const std::array<BoxOffset, 125>& box_offsets() {
+inline void load_block_node_index(const DdmpNodalValues& nv, size_t b, BlockNodeIndex& index) {
+  for (int i = -reach; i < bw + reach; ++i)
+    for (int j = -reach; j < bw + reach; ++j)
+      for (int k = -reach; k < bw + reach; ++k) {
+        const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
+        const int nb = nv.neighbours[b][size_t(neighbour_index(block_step(i), block_step(j), block_step(k)))];
+        index.node[BlockNodeIndex::at(i, j, k)] =
+            uint32_t(size_t(nb < 0 ? 0 : nb) * SparseGrid::nodes_per_block + size_t((((i & 3) * bw) + (j & 3)) * bw + (k & 3)));
+      }
+}
+// The step in BlockNodeIndex of the offset d of bit box_bit(d) of a neighbourhood pattern.
+inline const std::array<int16_t, 125>& box_index_steps() {
   static const auto table = [] {
-    std::array<BoxOffset, 125> out{};
+    std::array<int16_t, 125> out{};
     for (int x = -reach; x <= reach; ++x)
       for (int y = -reach; y <= reach; ++y)
-        for (int z = -reach; z <= reach; ++z) out[size_t(box_bit(x, y, z))] = {int8_t(x), int8_t(y), int8_t(z)};
+        for (int z = -reach; z <= reach; ++z)
+          out[size_t(box_bit(x, y, z))] = int16_t((x * BlockNodeIndex::width + y) * BlockNodeIndex::width + z);
     return out;
   }();
   return table;
 }
-// Calls fn(x, y, z, C_li) for the shares of a distribution, in bit order.
+// Calls fn(receiver, C_li) for the shares of the distribution of node n of the block whose
+// BlockNodeIndex is `index`, in bit order; receiver is the node's index in the grid.
 template <class Fn>
-void for_each_share(const DdmpDistribution& d, Fn&& fn) {
-  const auto& offsets = box_offsets();
+void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
+  const auto& steps = box_index_steps();
+  const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
   const Real* C = d.shares.data();
   for (int word = 0; word < 2; ++word)
-    for (uint64_t bits = uint64_t(d.receivers.bits >> (64 * word)); bits; bits &= bits - 1) {
-      const BoxOffset& o = offsets[size_t(__builtin_ctzll(bits) + 64 * word)];
-      fn(int(o.x), int(o.y), int(o.z), *C++);
-    }
+    for (uint64_t bits = uint64_t(d.receivers.bits >> (64 * word)); bits; bits &= bits - 1)
+      fn(size_t(own[steps[size_t(__builtin_ctzll(bits) + 64 * word)]]), *C++);
 }
 
 // C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
@@ -248,14 +267,6 @@ inline void load_mask_halo(const DdmpNodalValues& nv, size_t b, const std::vecto
     }
 }
 
-// The block b + (dx, dy, dz) holding local node (i, j, k) ∈ −reach … bw − 1 + reach, and the
-// node's index block · 64 + n in the grid's node order.
-inline size_t node_index_near(const DdmpNodalValues& nv, size_t b, int i, int j, int k) {
-  const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
-  const int nb = nv.neighbours[b][size_t(neighbour_index(block_step(i), block_step(j), block_step(k)))];
-  return size_t(nb) * SparseGrid::nodes_per_block + size_t((((i & 3) * bw) + (j & 3)) * bw + (k & 3));
-}
-
 // Calls fn(n) for the nodes n of a block whose bit is set in `mask`, in node order.
 template <class Fn>
 void for_each_bit(uint64_t mask, Fn&& fn) {
@@ -369,13 +380,14 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
   for (const auto& colour : nv.handing_by_colour)
     tbb::parallel_for(size_t(0), colour.size(), [&](size_t ci) {
       const size_t b = colour[ci];
+      BlockNodeIndex index;
+      load_block_node_index(nv, b, index);
       for_each_bit(nv.handing[b], [&](int n) {
         const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
         Pack source{};
         for (int c = 0; c < count; ++c) source[first + c] = nv.node(b, n)[c];
-        const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
-        for_each_share(d, [&](int x, int y, int z, Real C) {  // sizeable, so active
-          num::fma_into_node(nodes + node_index_near(nv, b, i + x, j + y, k + z) * lane::count, C, source, moved);
+        for_each_share(d, index, n, [&](size_t receiver, Real C) {
+          num::fma_into_node(nodes + receiver * lane::count, C, source, moved);
         });
       });
     });
@@ -390,13 +402,13 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count,
   // of the sum kept.
   const Real* nodes = grid.block(0);
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    if (!nv.handing[b]) return;
+    BlockNodeIndex index;
+    load_block_node_index(nv, b, index);
     for_each_bit(nv.handing[b], [&](int n) {
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-      const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
       Pack sum{};
-      for_each_share(d, [&](int x, int y, int z, Real C) {  // sizeable, so active
-        sum = num::fma_node(C, nodes + node_index_near(nv, b, i + x, j + y, k + z) * lane::count, sum);
-      });
+      for_each_share(d, index, n, [&](size_t receiver, Real C) { sum = num::fma_node(C, nodes + receiver * lane::count, sum); });
       for (int c = 0; c < count; ++c) nv.node(b, n)[c] = sum[first + c];
     });
   });
