@@ -194,7 +194,7 @@ inline DistributionMemo& distribution_memo() {
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
 // (find_ddmp_small_mass_nodes, before any pointer into it is taken). A step's own patterns
 // must fit, or every step refits them all: the paper-size T2P30 lattice starts with ≈ 54,000
-// (2026-11-28; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.5 kB a pattern
+// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.5 kB a pattern
 // (≈ 50 shares of 8 B, the map's node) the limit is ≈ 70 MB, 1.1 kB at most (124 shares).
 // One memo for the process: Simulations step one at a time.
 inline constexpr size_t distribution_memo_limit = size_t(1) << 17;
@@ -225,7 +225,7 @@ inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern
 }
 
 // The memo's look-up behind a small direct-mapped cache per thread: the concurrent map's
-// find was 6 % of a lattice step (QUICK T2P30, 2026-11-28), one hash and one compare here.
+// find was 6 % of a lattice step (QUICK T2P30, 2026-11-27), one hash and one compare here.
 inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& pattern) {
   struct Entry {
     NeighbourPattern pattern;
