@@ -12,8 +12,8 @@
 // both ways with Σ_i C_li = 1 keeps mass, momentum and force exactly and makes the
 // particles' momentum change equal to the total force; Σ_i C_li x_i = x_l (a linear fit,
 // find_ddmp_small_mass_nodes) makes a linear velocity field read back exactly, so the
-// smoothed velocity gradient of a surface node sees no spurious shear. Their staged
-// lanes and coefficients live in DdmpNodalValues (ddmp_grid.hpp).
+// smoothed velocity gradient of a surface node sees no spurious shear. Which nodes hand on,
+// and their coefficients, live in DdmpNodalValues (ddmp_grid.hpp).
 #pragma once
 #include <tbb/concurrent_unordered_map.h>
 #include <tbb/parallel_for.h>
@@ -91,13 +91,12 @@ struct NeighbourPatternHash {
 using Fit = std::array<Real, 4>;
 }  // namespace ddmp_grid_detail
 
-// A pattern's fit and its shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the
+// A pattern's shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the
 // hand-on and the read-back visit these, not all 124 offsets (for_each_share). The receivers
 // are the pattern's sizeable bits and the shares their coefficients in bit order (the
 // neighbour_offsets order), 8 bytes a share: a paper-size lattice has ≈ 54,000 patterns.
 struct DdmpDistribution {
-  ddmp_grid_detail::Fit fit;
-  ddmp_grid_detail::NeighbourPattern receivers;
+  ddmp_grid_detail::NeighbourPattern receivers;  // none: the node does not hand on
   std::vector<Real> shares;
 };
 
@@ -115,10 +114,10 @@ struct BlockNodeIndex {
   static int at(int i, int j, int k) { return ((i + reach) * width + (j + reach)) * width + (k + reach); }
 };
 inline void load_block_node_index(const DdmpNodalValues& nv, size_t b, BlockNodeIndex& index) {
+  const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
   for (int i = -reach; i < bw + reach; ++i)
     for (int j = -reach; j < bw + reach; ++j)
       for (int k = -reach; k < bw + reach; ++k) {
-        const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
         const int nb = nv.neighbours[b][size_t(neighbour_index(block_step(i), block_step(j), block_step(k)))];
         index.node[BlockNodeIndex::at(i, j, k)] =
             uint32_t(size_t(nb < 0 ? 0 : nb) * SparseGrid::nodes_per_block + size_t((((i & 3) * bw) + (j & 3)) * bw + (k & 3)));
@@ -214,12 +213,12 @@ inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern
   const auto it = memo.find(pattern);
   if (it != memo.end()) return it->second;
   DdmpDistribution d;
-  d.fit = fit_distribution(pattern);
-  if (d.fit[0] != 0)
+  const Fit fit = fit_distribution(pattern);
+  if (fit[0] != 0)
     for (const Offset& off : neighbour_offsets())  // in bit order, as for_each_share reads them
       if (pattern.sizeable(off)) {
         d.receivers.bits |= PatternBits(1) << box_bit(off.x, off.y, off.z);
-        d.shares.push_back(distribution_coefficient(d.fit.data(), off.x, off.y, off.z, off.weight));
+        d.shares.push_back(distribution_coefficient(fit.data(), off.x, off.y, off.z, off.weight));
       }
   return memo.insert({pattern, std::move(d)}).first->second;
 }
@@ -345,7 +344,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
       if ((positive.row[i + reach][j + reach] >> (k + reach)) & 1) pattern.bits |= PatternBits(1) << own_mass_bit;
       // Neighbouring nodes along a face share their pattern: look the last one up once.
       if (!last || !(pattern == last_pattern)) last = &remembered_distribution(pattern), last_pattern = pattern;
-      if (last->fit[0] == 0) return;
+      if (last->shares.empty()) return;
       nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)] = last;
       handing |= uint64_t(1) << n;
     });
@@ -366,15 +365,9 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
 // a fixed order (colour, then source node, then share): the same sums on any thread count.
 inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {  // stage and clear the sources
-    for_each_bit(nv.handing[b], [&](int n) {
-      Real* node = grid.block(b) + n * lane::count;
-      Real* staged = nv.node(b, n);
-      for (int c = 0; c < count; ++c) staged[c] = node[first + c], node[first + c] = 0;
-    });
-  });
   // The source's lanes in their places of a node, the others zero; only [first, first + count)
-  // of a receiver change (one masked multiply-add a share, num::fma_into_node).
+  // of a receiver change (one masked multiply-add a share, num::fma_into_node). Sources
+  // never receive (they are not sizeable), so each is read and cleared as it is pushed.
   const unsigned moved = ((1u << count) - 1) << first;
   Real* nodes = grid.block(0);
   for (const auto& colour : nv.handing_by_colour)
@@ -384,8 +377,9 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
       load_block_node_index(nv, b, index);
       for_each_bit(nv.handing[b], [&](int n) {
         const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+        Real* node = grid.block(b) + n * lane::count;
         Pack source{};
-        for (int c = 0; c < count; ++c) source[first + c] = nv.node(b, n)[c];
+        for (int c = first; c < first + count; ++c) source[c] = node[c], node[c] = 0;
         for_each_share(d, index, n, [&](size_t receiver, Real C) {
           num::fma_into_node(nodes + receiver * lane::count, C, source, moved);
         });
@@ -399,7 +393,7 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
 inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   // Whole nodes summed (one multiply-add a share, num::fma_node); lanes [first, first + count)
-  // of the sum kept.
+  // of the sum kept. The sums read sizeable nodes only, so each is written straight back.
   const Real* nodes = grid.block(0);
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (!nv.handing[b]) return;
@@ -409,14 +403,8 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count,
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
       Pack sum{};
       for_each_share(d, index, n, [&](size_t receiver, Real C) { sum = num::fma_node(C, nodes + receiver * lane::count, sum); });
-      for (int c = 0; c < count; ++c) nv.node(b, n)[c] = sum[first + c];
-    });
-  });
-  tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    for_each_bit(nv.handing[b], [&](int n) {
       Real* node = grid.block(b) + n * lane::count;
-      const Real* staged = nv.node(b, n);
-      for (int q = 0; q < count; ++q) node[first + q] = staged[q];
+      for (int c = first; c < first + count; ++c) node[c] = sum[c];
     });
   });
 }
