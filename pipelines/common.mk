@@ -52,6 +52,12 @@ pipeline_case_names = $(foreach r,$(1),$(call pipeline_field,$r,1))
 pipeline_check_cases = $(if $(and $(CASES),$(filter $(1) $(1)-results,$(MAKECMDGOALS)),$(filter-out $(call pipeline_case_names,$(2)),$(CASES))),\
   $(error CASES: $(1) has no case $(filter-out $(call pipeline_case_names,$(2)),$(CASES)); its cases are: $(call pipeline_case_names,$(2))))
 
+# KEEP_RUNS=1: a finished run stands when only the solver's version changed (its RUN.args
+# differ from the case table's in the "#solver=" line alone) and when its point file is
+# newer, e.g. runs put back from records/ by `make restore-runs` (pipelines/common/
+# restore-runs.sh). Without it (the default) every run of another build is redone.
+KEEP_RUNS ?= 0
+
 # Solver threads per run: 1 when make runs cases side by side (-jN), else all cores (0).
 SOLVE_THREADS = $(if $(filter -j%,$(MAKEFLAGS)),1,0)
 
@@ -70,9 +76,10 @@ define pipeline_case_rules
 $(1)/run-$(call pipeline_field,$(3),1).args: pipeline-args-force
 	@mkdir -p $$(@D) && { bash $(PIPELINE_COMMON)/case-table.sh args $(2) $(call pipeline_field,$(3),1) $(1) && \
 	  echo '$$(LATMPM_SOLVER_STAMP)'; } > $$@.new && \
-	  if cmp -s $$@.new $$@; then rm -f $$@.new; else mv $$@.new $$@; fi
+	  bash $(PIPELINE_COMMON)/update-args.sh $$@ $(KEEP_RUNS)
 $(1)/run-$(call pipeline_field,$(3),1)/done: $(1)/run-$(call pipeline_field,$(3),1).args \
-    $(1)/$(call pipeline_field,$(3),2) $(call pipeline_field,$(3),3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh
+    $(if $(filter 1,$(KEEP_RUNS)),,$(1)/$(call pipeline_field,$(3),2)) $(call pipeline_field,$(3),3) \
+    | $(if $(filter 1,$(KEEP_RUNS)),$(1)/$(call pipeline_field,$(3),2)) $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-case.sh
 	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1)/run-$(call pipeline_field,$(3),1) $$(SOLVE_THREADS) $(4)
 endef
 # $(call pipeline_table,OUT,TABLE,ROWS[,ALLOW_FAILURE]): the rules of every run of ROWS (from
@@ -90,6 +97,12 @@ $(1)/done: $(1).args $(2) $(3) | $(BIN)/latmpm-solve $(PIPELINE_COMMON)/solve-ca
 	bash $(PIPELINE_COMMON)/solve-case.sh $(BIN) $(1) $$(SOLVE_THREADS) $(5)
 $(1)/wall_time.txt: ;
 endef
+
+# Paper-resolution runs are recorded in records/ as they finish (pipelines/common/
+# record-run.sh, called by solve-case.sh); this puts every record back under results/.
+.PHONY: restore-runs
+restore-runs:
+	bash $(PIPELINE_COMMON)/restore-runs.sh
 
 # $(call pipeline_post,OUT_DIR,RUNS,POST_ARGS,TITLE,NOTES): latmpm-post over the runs into
 # OUT_DIR (summary.md, metrics.csv, plots/, curves/), then the set-up NOTES (a Markdown file)

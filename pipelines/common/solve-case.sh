@@ -11,6 +11,7 @@
 # continues from its checkpoint (latmpm-solve --resume) when RUN_DIR.args is still the one it
 # was started with (RUN_DIR/args.used: the same build of the solver too); the solver adds up
 # wall and CPU time over the parts.
+# A finished run under results/*/paper*/ is then recorded in records/ (record-run.sh).
 # usage: solve-case.sh BIN_DIR RUN_DIR THREADS [ALLOW_FAILURE]
 set -euo pipefail
 bin=$1 run_dir=$2 threads=$3 allow_failure=${4:-0}
@@ -45,3 +46,5 @@ if [ "$solve_status" -ne 0 ] && ! { [ "$solve_status" -eq 3 ] && [ "$allow_failu
   exit "$solve_status"
 fi
 touch "$run_dir/done"
+# A paper-resolution run is recorded in records/ (the run kept in the repository).
+bash "$(dirname "$0")/record-run.sh" "$run_dir" || echo "solve-case.sh: $run_dir finished but was not recorded in records/" >&2
