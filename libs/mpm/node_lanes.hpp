@@ -23,4 +23,37 @@ inline void store_lanes(Real* node, const NodeLanes& v) { std::memcpy(node, &v, 
 
 inline NodeLanes splat(Real x) { return NodeLanes{} + x; }
 
+// s·v and acc + s·v over a node's eight lanes, for the P2G and G2P node loops. Where the CPU
+// has no eight-lane vectors of Real (AVX2 without AVX-512: a NodeLanes is two four-lane
+// halves), GCC 12 builds the eight-lane copy of s that `s * v` implies through the stack —
+// eight scalar stores read back as 16-byte pieces, a store-forwarding stall each — and the
+// node loops of P2G and G2P ran 3–4× slower than their arithmetic (2026-11-28, AMD Zen 3:
+// docs/benchmarks.md, "Eight-lane splats on AVX2"). There each native half is multiplied by a
+// four-lane copy of s. Elsewhere these are the plain expressions, which the compiler
+// contracts exactly as it did the same expressions written inline: written in the order of
+// the expression they replace (acc + s·v + t·u = plus_scaled(plus_scaled(acc, s, v), t, u)),
+// the results are the same bits.
+inline NodeLanes scaled(Real s, const NodeLanes& v) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+  if constexpr (sizeof(Real) == 8) {
+    const Axes copies = {s, s, s, s};
+    const Axes low = copies * __builtin_shufflevector(v, v, 0, 1, 2, 3);
+    const Axes high = copies * __builtin_shufflevector(v, v, 4, 5, 6, 7);
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+#endif
+  return s * v;
+}
+inline NodeLanes plus_scaled(const NodeLanes& acc, Real s, const NodeLanes& v) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+  if constexpr (sizeof(Real) == 8) {
+    const Axes copies = {s, s, s, s};
+    const Axes low = __builtin_shufflevector(acc, acc, 0, 1, 2, 3) + copies * __builtin_shufflevector(v, v, 0, 1, 2, 3);
+    const Axes high = __builtin_shufflevector(acc, acc, 4, 5, 6, 7) + copies * __builtin_shufflevector(v, v, 4, 5, 6, 7);
+    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+#endif
+  return acc + s * v;
+}
+
 }  // namespace latmpm::mpm

@@ -154,8 +154,8 @@ inline void scatter_cpdi(const CpdiBoxStencil& st, Real* first, const NodeLanes&
       for (int k = 0; k < n; ++k) {
         const int e = CpdiBoxStencil::index(i, j, k);
         Real* node = first + i * RowStrideI + j * RowStrideJ + k * lane::count;
-        NodeLanes add = st.w[e] * a;
-        if constexpr (Force) add += st.g[0][e] * fx + st.g[1][e] * fy + st.g[2][e] * fz;
+        NodeLanes add = scaled(st.w[e], a);
+        if constexpr (Force) add += plus_scaled(plus_scaled(scaled(st.g[0][e], fx), st.g[1][e], fy), st.g[2][e], fz);
         store_lanes(node, load_lanes(node) + add);
       }
 }

@@ -213,16 +213,19 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
             const Real wij = st.w[i][0] * st.w[j][1];
             if constexpr (Mode::force) {
               // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
-              const NodeLanes row_w = wij * a + (st.dw[i][0] * st.w[j][1]) * fx + (st.w[i][0] * st.dw[j][1]) * fy;
-              const NodeLanes row_d = wij * fz;
+              const NodeLanes row_w =
+                  plus_scaled(plus_scaled(scaled(wij, a), st.dw[i][0] * st.w[j][1], fx), st.w[i][0] * st.dw[j][1], fy);
+              const NodeLanes row_d = scaled(wij, fz);
               with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
                 for (int k = 0; k < nk; ++k)
-                  store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w + st.dw[k][2] * row_d);
+                  store_lanes(row + k * L,
+                              plus_scaled(plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w), st.dw[k][2], row_d));
               });
             } else {
-              const NodeLanes row_w = wij * a;
+              const NodeLanes row_w = scaled(wij, a);
               with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
-                for (int k = 0; k < nk; ++k) store_lanes(row + k * L, load_lanes(row + k * L) + st.w[k][2] * row_w);
+                for (int k = 0; k < nk; ++k)
+                  store_lanes(row + k * L, plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w));
               });
             }
           }
@@ -246,7 +249,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
               for (int k = 0; k < N; ++k) {
                 Real* node = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L;
                 const Vec3& g = st.smoothed[(i * N + j) * N + k];
-                store_lanes(node, load_lanes(node) + g[0] * fx + g[1] * fy + g[2] * fz);
+                store_lanes(node, plus_scaled(plus_scaled(plus_scaled(load_lanes(node), g[0], fx), g[1], fy), g[2], fz));
               }
         }
         }  // tensor-product stencils
@@ -274,15 +277,15 @@ template <bool Gradient, int N>
       NodeLanes rw{}, rd{};
       for (int k = 0; k < nk; ++k) {
         const NodeLanes node = load_lanes(row + k * lane::count);
-        rw += st.w[k][2] * node;
-        if constexpr (Gradient) rd += st.dw[k][2] * node;
+        rw = plus_scaled(rw, st.w[k][2], node);
+        if constexpr (Gradient) rd = plus_scaled(rd, st.dw[k][2], node);
       }
       const Real wij = st.w[i][0] * st.w[j][1];
-      out.aw += wij * rw;
+      out.aw = plus_scaled(out.aw, wij, rw);
       if constexpr (Gradient) {
-        out.ax += (st.dw[i][0] * st.w[j][1]) * rw;
-        out.ay += (st.w[i][0] * st.dw[j][1]) * rw;
-        out.az += wij * rd;
+        out.ax = plus_scaled(out.ax, st.dw[i][0] * st.w[j][1], rw);
+        out.ay = plus_scaled(out.ay, st.w[i][0] * st.dw[j][1], rw);
+        out.az = plus_scaled(out.az, wij, rd);
       }
     }
   return out;
@@ -323,9 +326,9 @@ template <bool Gradient, class DdmpStencilType,
           const NodeLanes node =
               load_lanes(first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * lane::count);
           const Vec3& g = st.smoothed[(i * 4 + j) * 4 + k];
-          out.ax += g[0] * node;
-          out.ay += g[1] * node;
-          out.az += g[2] * node;
+          out.ax = plus_scaled(out.ax, g[0], node);
+          out.ay = plus_scaled(out.ay, g[1], node);
+          out.az = plus_scaled(out.az, g[2], node);
         }
   }
   return out;
@@ -364,11 +367,11 @@ template <bool Gradient>
       for (int k = 0; k < n; ++k) {
         const int e = CpdiBoxStencil::index(i, j, k);
         const NodeLanes node = load_lanes(first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * lane::count);
-        out.aw += st.w[e] * node;
+        out.aw = plus_scaled(out.aw, st.w[e], node);
         if constexpr (Gradient) {
-          out.ax += st.g[0][e] * node;
-          out.ay += st.g[1][e] * node;
-          out.az += st.g[2][e] * node;
+          out.ax = plus_scaled(out.ax, st.g[0][e], node);
+          out.ay = plus_scaled(out.ay, st.g[1][e], node);
+          out.az = plus_scaled(out.az, st.g[2][e], node);
         }
       }
   return out;
