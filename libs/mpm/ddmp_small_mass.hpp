@@ -137,8 +137,11 @@ inline const std::array<int16_t, 125>& box_index_steps() {
 }
 // Calls fn(receiver, C_li) for the shares of the distribution of node n of the block whose
 // BlockNodeIndex is `index`, in bit order; receiver is the node's index in the grid.
+// Inlined, so that a sum fn keeps over the shares stays in registers: called out of line,
+// the read-back's eight-lane sum went through the stack at every share on AVX2 (a
+// store-forwarding stall each; docs/benchmarks.md, "Eight-lane splats on AVX2").
 template <class Fn>
-void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
+[[gnu::always_inline]] inline void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
   const auto& steps = box_index_steps();
   const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
   const Real* C = d.shares.data();
@@ -392,7 +395,7 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
 // remapped velocity).
 inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  // Whole nodes summed (one multiply-add a share, num::fma_node); lanes [first, first + count)
+  // Whole nodes summed (one multiply-add a share, num::NodeSum); lanes [first, first + count)
   // of the sum kept. The sums read sizeable nodes only, so each is written straight back.
   const Real* nodes = grid.block(0);
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
@@ -401,8 +404,8 @@ inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count,
     load_block_node_index(nv, b, index);
     for_each_bit(nv.handing[b], [&](int n) {
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-      Pack sum{};
-      for_each_share(d, index, n, [&](size_t receiver, Real C) { sum = num::fma_node(C, nodes + receiver * lane::count, sum); });
+      num::NodeSum sum;
+      for_each_share(d, index, n, [&](size_t receiver, Real C) { sum.add(C, nodes + receiver * lane::count); });
       Real* node = grid.block(b) + n * lane::count;
       for (int c = first; c < first + count; ++c) node[c] = sum[c];
     });

@@ -37,9 +37,7 @@ inline NodeLanes scaled(Real s, const NodeLanes& v) {
 #if defined(__AVX__) && !defined(__AVX512F__)
   if constexpr (sizeof(Real) == 8) {
     const Axes copies = {s, s, s, s};
-    const Axes low = copies * __builtin_shufflevector(v, v, 0, 1, 2, 3);
-    const Axes high = copies * __builtin_shufflevector(v, v, 4, 5, 6, 7);
-    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+    return num::join_halves(copies * num::low_half(v), copies * num::high_half(v));
   }
 #endif
   return s * v;
@@ -48,9 +46,8 @@ inline NodeLanes plus_scaled(const NodeLanes& acc, Real s, const NodeLanes& v) {
 #if defined(__AVX__) && !defined(__AVX512F__)
   if constexpr (sizeof(Real) == 8) {
     const Axes copies = {s, s, s, s};
-    const Axes low = __builtin_shufflevector(acc, acc, 0, 1, 2, 3) + copies * __builtin_shufflevector(v, v, 0, 1, 2, 3);
-    const Axes high = __builtin_shufflevector(acc, acc, 4, 5, 6, 7) + copies * __builtin_shufflevector(v, v, 4, 5, 6, 7);
-    return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+    return num::join_halves(num::low_half(acc) + copies * num::low_half(v),
+                            num::high_half(acc) + copies * num::high_half(v));
   }
 #endif
   return acc + s * v;
