@@ -29,10 +29,10 @@ inline NodeLanes splat(Real x) { return NodeLanes{} + x; }
 // eight scalar stores read back as 16-byte pieces, a store-forwarding stall each — and the
 // node loops of P2G and G2P ran 3–4× slower than their arithmetic (2026-11-28, AMD Zen 3:
 // docs/benchmarks.md, "Eight-lane splats on AVX2"). There each native half is multiplied by a
-// four-lane copy of s. Elsewhere these are the plain expressions, which the compiler
-// contracts exactly as it did the same expressions written inline: written in the order of
-// the expression they replace (acc + s·v + t·u = plus_scaled(plus_scaled(acc, s, v), t, u)),
-// the results are the same bits.
+// four-lane copy of s. Elsewhere these are the plain expressions, written in the order of the
+// expressions they replace (acc + s·v + t·u = plus_scaled(plus_scaled(acc, s, v), t, u)), so
+// the compiler contracts them as before: on AVX2 the results are the same bits (42 digests);
+// on AVX-512 the kernels have the same count of each floating-point instruction (not run).
 inline NodeLanes scaled(Real s, const NodeLanes& v) {
 #if defined(__AVX__) && !defined(__AVX512F__)
   if constexpr (sizeof(Real) == 8) {

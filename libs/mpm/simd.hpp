@@ -125,7 +125,7 @@ inline void fma_into_node(Real* node, Real c, const Pack& source, unsigned lanes
     return;
   }
 #elif defined(__AVX2__) && defined(__FMA__)
-  if constexpr (std::is_same_v<Real, double>) {  // per 256-bit half: the fused multiply-add, blended by the lanes' bits
+  if constexpr (std::is_same_v<Real, double>) {  // per 256-bit half: the multiply-add, blended by the lanes' bits
     const __m256d copies = _mm256_set1_pd(c);
     const __m256i bits = _mm256_setr_epi64x(1, 2, 4, 8);
     const Axes halves[2] = {low_half(source), high_half(source)};
