@@ -16,7 +16,8 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 run_dir=${1%/}
 rel=$(realpath -m --relative-to="$root/results" "$run_dir")
 case $rel in ../* | /*) exit 0 ;; esac  # not under results/
-case "/$rel/" in */paper/* | */paper-*/*) ;; *) exit 0 ;; esac
+mode=$(cut -d/ -f2 <<< "$rel")  # results/<experiment>/<mode>/...
+case $mode in paper | paper-*) ;; *) exit 0 ;; esac
 [ -f "$run_dir/done" ] && [ -f "$run_dir/series.csv" ] && [ -f "$run_dir.args" ] || {
   echo "record-run.sh: $run_dir: not a finished run (no done, series.csv or $run_dir.args); not recorded" >&2
   exit 1

@@ -34,6 +34,12 @@ for f in args status.toml scene.toml log.txt series.csv.gz; do
 done
 cmp -s "$record/args" "$paper.args" || fail "the record's args are not the run's"
 [ ! -e records/column-buckling/quick ] || fail "a QUICK run was recorded"
+# The mode is the directory under the experiment's: an experiment named paper-* is not a mode.
+case_args results/paper-x/quick/run-tiny build-a
+mkdir -p results/paper-x/quick/run-tiny && cp "$quick"/{series.csv,status.toml} results/paper-x/quick/run-tiny/
+touch results/paper-x/quick/run-tiny/done
+bash pipelines/common/record-run.sh results/paper-x/quick/run-tiny
+[ ! -e records/paper-x ] || fail "a QUICK run of an experiment named paper-x was recorded"
 echo "recorded: $(ls "$record" | tr '\n' ' ')"
 
 "$bin/latmpm-post" "$paper" -o post-original --kind column --label tiny="$paper" > /dev/null
