@@ -53,7 +53,7 @@ pipeline_check_cases = $(if $(and $(CASES),$(filter $(1) $(1)-results,$(MAKECMDG
   $(error CASES: $(1) has no case $(filter-out $(call pipeline_case_names,$(2)),$(CASES)); its cases are: $(call pipeline_case_names,$(2))))
 
 # KEEP_RUNS=1: a finished run stands when only the solver's version changed (its RUN.args
-# differ from the case table's in the "#solver=" line alone) and when its point file is
+# differ from the case table's in the "#solver=" line alone), even when its point file is
 # newer, e.g. runs put back from records/ by `make restore-runs` (pipelines/common/
 # restore-runs.sh). Without it (the default) every run of another build is redone.
 KEEP_RUNS ?= 0

@@ -11,7 +11,7 @@
 # continues from its checkpoint (latmpm-solve --resume) when RUN_DIR.args is still the one it
 # was started with (RUN_DIR/args.used: the same build of the solver too); the solver adds up
 # wall and CPU time over the parts.
-# A finished run under results/*/paper*/ is then recorded in records/ (record-run.sh).
+# A finished run under results/<experiment>/paper*/ is then recorded in records/ (record-run.sh).
 # usage: solve-case.sh BIN_DIR RUN_DIR THREADS [ALLOW_FAILURE]
 set -euo pipefail
 bin=$1 run_dir=$2 threads=$3 allow_failure=${4:-0}
