@@ -64,11 +64,11 @@ SOLVE_THREADS = $(if $(filter -j%,$(MAKEFLAGS)),1,0)
 .PHONY: pipeline-args-force
 pipeline-args-force:
 
-# $(call pipeline_args,FILE,WORDS): FILE holds WORDS one per line, rewritten only on a change.
+# $(call pipeline_args,FILE,WORDS): FILE holds WORDS one per line, rewritten only on a change
+# (update-args.sh).
 define pipeline_args
 $(1): pipeline-args-force
-	@mkdir -p $$(@D) && printf '%s\n' $(2) > $$@.new && \
-	  if cmp -s $$@.new $$@; then rm -f $$@.new; else mv $$@.new $$@; fi
+	@mkdir -p $$(@D) && printf '%s\n' $(2) > $$@.new && bash $(PIPELINE_COMMON)/update-args.sh $$@ 0
 endef
 
 # The run of one row of TABLE into OUT (ALLOW_FAILURE = 1: a numerical failure is an outcome).

@@ -369,8 +369,8 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
 inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   // The source's lanes in their places of a node, the others zero; only [first, first + count)
-  // of a receiver change (one masked multiply-add a share, num::fma_into_node). Sources
-  // never receive (they are not sizeable), so each is read and cleared as it is pushed.
+  // of a receiver change (one masked multiply-add a share, num::MaskedLanes). Sources never
+  // receive (they are not sizeable), so each is read and cleared as it is pushed.
   const unsigned moved = ((1u << count) - 1) << first;
   Real* nodes = grid.block(0);
   for (const auto& colour : nv.handing_by_colour)
@@ -383,9 +383,8 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
         Real* node = grid.block(b) + n * lane::count;
         Pack source{};
         for (int c = first; c < first + count; ++c) source[c] = node[c], node[c] = 0;
-        for_each_share(d, index, n, [&](size_t receiver, Real C) {
-          num::fma_into_node(nodes + receiver * lane::count, C, source, moved);
-        });
+        const num::MaskedLanes pushed(source, moved);
+        for_each_share(d, index, n, [&](size_t receiver, Real C) { pushed.add_into(nodes + receiver * lane::count, C); });
       });
     });
 }

@@ -24,7 +24,7 @@ inline void store_lanes(Real* node, const NodeLanes& v) { std::memcpy(node, &v, 
 inline NodeLanes splat(Real x) { return NodeLanes{} + x; }
 
 // s·v and acc + s·v over a node's eight lanes, for the P2G and G2P node loops. Where the CPU
-// has no eight-lane vectors of Real (AVX2 without AVX-512: a NodeLanes is two four-lane
+// has no eight-lane vectors of Real (num::pack_in_halves: a NodeLanes is two four-lane
 // halves), GCC 12 builds the eight-lane copy of s that `s * v` implies through the stack —
 // eight scalar stores read back as 16-byte pieces, a store-forwarding stall each — and the
 // node loops of P2G and G2P ran 3–4× slower than their arithmetic (2026-11-28, AMD Zen 3:
@@ -34,22 +34,18 @@ inline NodeLanes splat(Real x) { return NodeLanes{} + x; }
 // the compiler contracts them as before: on AVX2 the results are the same bits (42 digests);
 // on AVX-512 the kernels have the same count of each floating-point instruction (not run).
 inline NodeLanes scaled(Real s, const NodeLanes& v) {
-#if defined(__AVX__) && !defined(__AVX512F__)
-  if constexpr (sizeof(Real) == 8) {
+  if constexpr (num::pack_in_halves) {
     const Axes copies = {s, s, s, s};
     return num::join_halves(copies * num::low_half(v), copies * num::high_half(v));
   }
-#endif
   return s * v;
 }
 inline NodeLanes plus_scaled(const NodeLanes& acc, Real s, const NodeLanes& v) {
-#if defined(__AVX__) && !defined(__AVX512F__)
-  if constexpr (sizeof(Real) == 8) {
+  if constexpr (num::pack_in_halves) {
     const Axes copies = {s, s, s, s};
     return num::join_halves(num::low_half(acc) + copies * num::low_half(v),
                             num::high_half(acc) + copies * num::high_half(v));
   }
-#endif
   return acc + s * v;
 }
 

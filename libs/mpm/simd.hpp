@@ -80,67 +80,103 @@ inline Axes high_half(const Pack& p) { return __builtin_shufflevector(p, p, 4, 5
 inline Pack join_halves(const Axes& low, const Axes& high) {
   return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
 }
+// Whether a Pack is two native four-lane halves (AVX without AVX-512): there GCC 12 builds any
+// eight-lane value it cannot keep in registers (a splat of a scalar, a sum carried through a
+// call) on the stack, read back in 16-byte pieces with a store-forwarding stall each, so the
+// hot loops work on the halves (node_lanes.hpp, NodeSum, MaskedLanes; docs/benchmarks.md,
+// "Eight-lane splats on AVX2").
+#if defined(__AVX__) && !defined(__AVX512F__)
+inline constexpr bool pack_in_halves = true;
+#else
+inline constexpr bool pack_in_halves = false;
+#endif
 
 // The eight lanes of one grid node as a Pack: the grid's nodes are 64-byte aligned
 // (sparse_grid.hpp). Loads and stores of Pack alias only Real, unlike the intrinsics' types,
 // so the loops around them keep their indices in registers.
 inline const Pack& node_pack(const Real* node) { return *reinterpret_cast<const Pack*>(node); }
 inline Pack& node_pack(Real* node) { return *reinterpret_cast<Pack*>(node); }
+
 // Σ c_i node_i over whole nodes, lane by lane, one fused multiply-add per lane and node (the
 // same roundings as a lane loop of std::fma): add(c, node) adds c times the node's eight lanes.
-// Kept in one 512-bit register with AVX-512 and in two 256-bit ones with AVX2: an eight-lane
-// Pack accumulated there went through the stack at every node (a store-forwarding stall each).
-#if defined(__AVX2__) && defined(__FMA__) && !defined(__AVX512F__)
+// Kept in one 512-bit register with AVX-512 and in two 256-bit ones with AVX2.
+//
+// MaskedLanes: a source node's lanes added into other nodes, c times each: add_into(node, c)
+// sets node[q] = fma(c, source[q], node[q]) for the lanes q whose bit is set in `lanes` and
+// leaves the others as they are (bit for bit). The source and its mask are laid out once, so
+// each receiver costs one masked 512-bit fused multiply-add (AVX-512) or two 256-bit ones
+// blended by the mask (AVX2).
+#if defined(__AVX512F__)
+struct NodeSum {
+  Pack lanes{};
+  void add(Real c, const Real* node) {
+    lanes = (Pack)_mm512_fmadd_pd(_mm512_set1_pd(c), (__m512d)node_pack(node), (__m512d)lanes);
+  }
+  Real operator[](int q) const { return lanes[q]; }
+};
+class MaskedLanes {
+ public:
+  MaskedLanes(const Pack& source, unsigned lanes) : source_(source), mask_(__mmask8(lanes)) {}
+  void add_into(Real* node, Real c) const {
+    Pack& target = node_pack(node);
+    target = (Pack)_mm512_mask3_fmadd_pd(_mm512_set1_pd(c), (__m512d)source_, (__m512d)target, mask_);
+  }
+
+ private:
+  Pack source_;
+  __mmask8 mask_;
+};
+#elif defined(__AVX2__) && defined(__FMA__)
 struct NodeSum {
   __m256d low = _mm256_setzero_pd(), high = _mm256_setzero_pd();
-  void add(double c, const double* node) {
+  void add(Real c, const Real* node) {
     const __m256d copies = _mm256_set1_pd(c);
     low = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node), low);
     high = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node + 4), high);
   }
-  double operator[](int q) const { return q < 4 ? ((Axes)low)[q] : ((Axes)high)[q - 4]; }
+  Real operator[](int q) const { return q < 4 ? ((Axes)low)[q] : ((Axes)high)[q - 4]; }
+};
+class MaskedLanes {
+ public:
+  MaskedLanes(const Pack& source, unsigned lanes)
+      : source_{(__m256d)low_half(source), (__m256d)high_half(source)},
+        mask_{half_mask(lanes & 15), half_mask((lanes >> 4) & 15)} {}
+  void add_into(Real* node, Real c) const {
+    const __m256d copies = _mm256_set1_pd(c);
+    for (int h = 0; h < 2; ++h) {
+      const __m256d target = _mm256_loadu_pd(node + 4 * h);
+      _mm256_storeu_pd(node + 4 * h, _mm256_blendv_pd(target, _mm256_fmadd_pd(copies, source_[h], target), mask_[h]));
+    }
+  }
+
+ private:
+  static __m256d half_mask(unsigned bits) {  // lane q all ones where bit q is set
+    const __m256i each = _mm256_setr_epi64x(1, 2, 4, 8);
+    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(_mm256_set1_epi64x(bits), each), each));
+  }
+  __m256d source_[2], mask_[2];
 };
 #else
 struct NodeSum {
   Pack lanes{};
   void add(Real c, const Real* node) {
-#if defined(__AVX512F__)
-    if constexpr (std::is_same_v<Real, double>) {
-      lanes = (Pack)_mm512_fmadd_pd(_mm512_set1_pd(c), (__m512d)node_pack(node), (__m512d)lanes);
-      return;
-    }
-#endif
     for (int q = 0; q < pack_width; ++q) lanes[q] = std::fma(c, node[q], lanes[q]);
   }
   Real operator[](int q) const { return lanes[q]; }
 };
-#endif
-// node[q] = fma(c, source[q], node[q]) for the lanes q whose bit is set in `lanes`, the others
-// left as they are (bit for bit): one masked 512-bit fused multiply-add where the CPU has it.
-inline void fma_into_node(Real* node, Real c, const Pack& source, unsigned lanes) {
-#if defined(__AVX512F__)
-  if constexpr (std::is_same_v<Real, double>) {
-    Pack& target = node_pack(node);
-    target = (Pack)_mm512_mask3_fmadd_pd(_mm512_set1_pd(c), (__m512d)source, (__m512d)target, __mmask8(lanes));
-    return;
+class MaskedLanes {
+ public:
+  MaskedLanes(const Pack& source, unsigned lanes) : source_(source), lanes_(lanes) {}
+  void add_into(Real* node, Real c) const {
+    for (int q = 0; q < pack_width; ++q)
+      if ((lanes_ >> q) & 1) node[q] = std::fma(c, source_[q], node[q]);
   }
-#elif defined(__AVX2__) && defined(__FMA__)
-  if constexpr (std::is_same_v<Real, double>) {  // per 256-bit half: the multiply-add, blended by the lanes' bits
-    const __m256d copies = _mm256_set1_pd(c);
-    const __m256i bits = _mm256_setr_epi64x(1, 2, 4, 8);
-    const Axes halves[2] = {low_half(source), high_half(source)};
-    for (int h = 0; h < 2; ++h) {
-      const __m256i selected = _mm256_and_si256(_mm256_set1_epi64x((lanes >> (4 * h)) & 15), bits);
-      const __m256d mask = _mm256_castsi256_pd(_mm256_cmpeq_epi64(selected, bits));
-      const __m256d target = _mm256_loadu_pd(node + 4 * h);
-      _mm256_storeu_pd(node + 4 * h, _mm256_blendv_pd(target, _mm256_fmadd_pd(copies, (__m256d)halves[h], target), mask));
-    }
-    return;
-  }
+
+ private:
+  Pack source_;
+  unsigned lanes_;
+};
 #endif
-  for (int q = 0; q < pack_width; ++q)
-    if ((lanes >> q) & 1) node[q] = std::fma(c, source[q], node[q]);
-}
 }  // namespace num
 
 }  // namespace latmpm::mpm

@@ -31,11 +31,14 @@ for record in "${records[@]}"; do
   fi
   tmp="$run_dir.restoring.$$"
   mkdir -p "$tmp"
-  for f in status.toml scene.toml log.txt summary.txt; do
-    if [ -f "$record/$f" ]; then cp "$record/$f" "$tmp/"; fi
+  # The record's files as record-run.sh kept them, the series unpacked and args as args.used.
+  for f in "$record"/*; do
+    case ${f##*/} in
+    args) cp "$f" "$tmp/args.used" ;;
+    series.csv.gz) gzip -dc "$f" > "$tmp/series.csv" ;;
+    *) cp "$f" "$tmp/" ;;
+    esac
   done
-  gzip -dc "$record/series.csv.gz" > "$tmp/series.csv"
-  cp "$record/args" "$tmp/args.used"
   cp "$record/args" "$run_dir.args"
   mv "$tmp" "$run_dir"
   touch "$run_dir/done"
