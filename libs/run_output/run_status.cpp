@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_transfer.hpp"
+#include "core/machine.hpp"
 
 namespace latmpm {
 namespace {
@@ -92,6 +93,10 @@ void write_run_status(const std::string& run_dir, const RunOutcome& o, const Pro
   key("tool") << toml_string(p.tool) << "\n";
   key("version") << toml_string(p.version) << "\n";
   if (!o.precision.empty()) key("precision") << toml_string(o.precision) << "\n";
+  // The machine of this part: a resumed run's earlier parts may have run on another.
+  key("cpu_model") << toml_string(cpu_model()) << "\n";
+  key("cpus") << usable_cpus() << "\n";
+  key("vector_isa") << toml_string(vector_instruction_set()) << "\n";
   key("command") << toml_string(p.command_line) << "\n";
   key("written_utc") << toml_string(Provenance::for_run(p.tool, 0, nullptr).created_utc) << "\n";
 

@@ -15,6 +15,9 @@
 //   peak_memory_mb           this part's peak resident memory
 //   tool, version, command, written_utc   provenance
 //   precision = "double"     the solver build's particle precision (double | mixed, mpm/real.hpp)
+//   cpu_model, cpus, vector_isa   the machine of this part (core/machine.hpp): the processor's
+//                            name, the processors the process may use, and the vector instruction
+//                            set the build targets; a cost is comparable only on the same ones
 #pragma once
 #include <cstdint>
 #include <string>

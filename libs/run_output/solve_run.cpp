@@ -12,6 +12,7 @@
 #include "core/file_transfer.hpp"
 #include "core/hdf5_file.hpp"
 #include "core/interruption.hpp"
+#include "core/machine.hpp"
 #include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "core/number_text.hpp"
@@ -161,6 +162,8 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
   // Every process's (a resumed run on several processes holds its share already).
   const size_t particles = size_t(sim.domain().reduce_sum(double(sim.particles().size())));
   log.line(provenance_.tool + " " + provenance_.version);
+  log.line("machine: " + cpu_model() + ", " + std::to_string(usable_cpus()) + " CPUs usable, built for " +
+           vector_instruction_set() + ", " + mpm::precision_name + " precision");
   log.line("command: " + provenance_.command_line);
   log.line("scene: " + scene_.source + " (resolved copy: scene.toml)");
   for (const auto& f : scene_.point_files) log.line("points: " + f.path);

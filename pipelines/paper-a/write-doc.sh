@@ -67,6 +67,13 @@ speed_lost() {
     { d = $1 - half / 2; if (d < 0) d = -d; if (best == "" || d < best) { best = d; v = $4; t = $1 } }
     END { if (v0 + 0 != 0 && best != "") printf "%.6g", (v0 + g * t / 1000 - v) / v0 }' "$f"
 }
+# machine_of RUNS.CSV LABEL: "processor (vector isa)" of a run, "not recorded" for a runs.csv or
+# a run from before status.toml named its machine.
+machine_of() {
+  local cpu isa
+  cpu=$(post_metric "$1" "$2" cpu_model 2>/dev/null || true) isa=$(post_metric "$1" "$2" vector_isa 2>/dev/null || true)
+  echo "${cpu:-not recorded}${isa:+ ($isa)}"
+}
 pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (p == "-0") p = "0"; print p " %" } }'; }
 
 {
@@ -297,17 +304,43 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
   fi
 
   echo
+  echo "## Runs of the case tables not in this document"
+  echo
+  echo "Every case of each experiment's table (\`pipelines/<experiment>/cases-$mode.txt\`) without a"
+  echo "finished run in its runs.csv. Why they are missing is their cost: docs/experiments.md, \"The cost"
+  echo "of paper A at paper resolution\", gives what each kind of run takes; a finished paper run is kept"
+  echo "in records/ (\`make restore-runs\`), so they can be added one session at a time."
+  echo
+  echo "| experiment | cases in the table | finished here | not run | to run them |"
+  echo "|---|---|---|---|---|"
+  for e in column-buckling lattice-compression imperfections impact; do
+    table="pipelines/$e/cases-$mode.txt" r="results/$e/$mode/runs.csv"
+    [ -f "$table" ] || continue
+    all=$(bash "$here/../common/case-table.sh" list "$table" ugimp,ddmp | cut -d'|' -f1)
+    done_cases=$([ -f "$r" ] && awk -F, '!/^#/ && !h { h = 1; next } !/^#/ && $2 == "finished" { print $1 }' "$r" || true)
+    missing_cases=$(comm -23 <(sort <<< "$all") <(sort <<< "$done_cases") | tr '\n' ' ' | sed 's/ $//')
+    n_all=$(wc -w <<< "$all") n_missing=$(wc -w <<< "$missing_cases")
+    if [ "$n_missing" -eq 0 ]; then
+      echo "| $e | $n_all | $n_all | — | |"
+    else
+      echo "| $e | $n_all | $((n_all - n_missing)) | $missing_cases | \`make $e${quick_flag} CASES=\"…\"\` |"
+    fi
+  done
+
+  echo
   echo "## Cost of every run"
   echo
-  echo "From each experiment's runs.csv (the runs' status.toml; CPU = user + system)."
+  echo "From each experiment's runs.csv (the runs' status.toml; CPU = user + system). A CPU time holds"
+  echo "for the processor beside it: one run costs several times the CPU on some processors of the"
+  echo "project's machine kind that it costs on others (docs/benchmarks.md, \"Eight-lane splats on AVX2\")."
   echo
-  echo "| experiment | run | status | points | steps | wall (s) | CPU (s) | peak memory (MB) |"
-  echo "|---|---|---|---|---|---|---|---|"
+  echo "| experiment | run | status | points | steps | wall (s) | CPU (s) | peak memory (MB) | machine |"
+  echo "|---|---|---|---|---|---|---|---|---|"
   for e in column-buckling lattice-compression imperfections impact; do
     r="results/$e/$mode/runs.csv"
-    [ -f "$r" ] || { echo "| $e | (not run) | | | | | | |"; continue; }
+    [ -f "$r" ] || { echo "| $e | (not run) | | | | | | | |"; continue; }
     for l in $(labels "$r"); do
-      echo "| $e | $l | $(post_metric "$r" "$l" status) | $(post_metric "$r" "$l" points) | $(post_metric "$r" "$l" steps) | $(post_metric "$r" "$l" wall) | $(post_metric "$r" "$l" cpu) | $(post_metric "$r" "$l" peak_memory) |"
+      echo "| $e | $l | $(post_metric "$r" "$l" status) | $(post_metric "$r" "$l" points) | $(post_metric "$r" "$l" steps) | $(post_metric "$r" "$l" wall) | $(post_metric "$r" "$l" cpu) | $(post_metric "$r" "$l" peak_memory) | $(machine_of "$r" "$l") |"
     done
   done
 } > "$tmp"

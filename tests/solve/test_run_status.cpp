@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <thread>
 #include <toml++/toml.h>
 
 #include "mpm/real.hpp"  // precision_name
@@ -74,6 +75,19 @@ TEST_CASE("A finished run records its end, steps, time and cost in status.toml",
   // The build's particle precision (mpm/real.hpp), which the tool under test was built with.
   CHECK(text(status, "precision") == mpm::precision_name);
   CHECK_THAT(text(status, "command"), Catch::Contains("-o " + run.string()));
+  // The machine the cost was measured on: the processor named as /proc/cpuinfo names it, the
+  // processors this process may use, and one of the instruction sets a build can target.
+  const std::string cpu = text(status, "cpu_model");
+  CHECK(cpu != "?");
+  const std::string cpuinfo = fs::exists("/proc/cpuinfo") ? read_text("/proc/cpuinfo") : "";
+  if (cpuinfo.find("model name") != std::string::npos)
+    CHECK_THAT(cpuinfo, Catch::Contains(cpu.substr(0, cpu.find(" (family "))));
+  if (cpuinfo.find("cpu family") != std::string::npos)  // x86
+    CHECK_THAT(cpu, Catch::Matches(".+ \\(family [0-9]+ model [0-9]+\\)"));
+  const double cpus = number(status, "cpus");
+  CHECK(cpus >= 1);
+  CHECK(cpus <= std::thread::hardware_concurrency());
+  CHECK_THAT(text(status, "vector_isa"), Catch::Matches("avx512|avx2|avx|sse2|none"));
 }
 
 TEST_CASE("A numerical failure is recorded in status.toml with exit status 3 and its reason", "[solve]") {
