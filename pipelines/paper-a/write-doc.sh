@@ -307,9 +307,10 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
   echo "## Runs of the case tables not in this document"
   echo
   echo "Every case of each experiment's table (\`pipelines/<experiment>/cases-$mode.txt\`) without a"
-  echo "finished run in its runs.csv. Why they are missing is their cost: docs/experiments.md, \"The cost"
-  echo "of paper A at paper resolution\", gives what each kind of run takes; a finished paper run is kept"
-  echo "in records/ (\`make restore-runs\`), so they can be added one session at a time."
+  echo "finished run in its runs.csv. At paper resolution what keeps a case out is its cost:"
+  echo "docs/experiments.md, \"The cost of paper A at paper resolution\", gives what each kind of run takes."
+  echo "A finished paper-resolution run is kept in records/ (\`make restore-runs\` puts it back), so the"
+  echo "missing cases can be added a few at a time."
   echo
   echo "| experiment | cases in the table | finished here | not run | to run them |"
   echo "|---|---|---|---|---|"
