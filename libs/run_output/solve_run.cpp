@@ -179,6 +179,16 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
                 ? ", DDMP null-space stabilization " + format_number("%g", scene_.settings.ddmp_stabilization) +
                       (scene_.settings.ddmp_stabilization > 0 ? " of the elastic moduli" : " (Paper A as printed)")
                 : std::string()));
+  if (const auto& contact = scene_.settings.field_contact; contact.enabled) {
+    auto joined = [](const std::vector<std::string>& names) {
+      std::string text;
+      for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+      return text.empty() ? std::string("none") : text;
+    };
+    log.line("contact: a velocity field per body and per point group (" + joined(contact.groups) + "), friction " +
+             format_number("%g", contact.friction) + ", fill " + format_number("%g", contact.fill) + ", bonded bodies " +
+             joined(contact.bonded_bodies));
+  }
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.
   const double stable = sim.stable_time_step();

@@ -90,6 +90,23 @@ TEST_CASE("A finished run records its end, steps, time and cost in status.toml",
   CHECK_THAT(text(status, "vector_isa"), Catch::Matches("avx512|avx2|avx|sse2|none"));
 }
 
+TEST_CASE("The log names the machine, and the contact fields when the scene has them", "[solve]") {
+  const std::string scene = write_scene("tiny-contact.toml", std::string(tiny_scene) + "[contact]\nfriction = 0.3\n");
+  const fs::path run = scratch() / "run-log-contact";
+  const ToolRun r = run_solve(scene + " -o " + run.string() + " --quiet --threads 1 --set run.max_steps=5");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string log = read_text(run / "log.txt");
+  const toml::table status = read_status(run);
+  CHECK_THAT(log, Catch::Contains("machine: " + text(status, "cpu_model") + ", "));
+  CHECK_THAT(log, Catch::Contains("built for " + text(status, "vector_isa") + ", " + mpm::precision_name + " precision"));
+  CHECK_THAT(log, Catch::Contains("contact: a velocity field per body and per point group (none), friction 0.3, fill 0.9"));
+  // Without [contact] there is one field and no such line.
+  const fs::path single = scratch() / "run-log-single";
+  REQUIRE(run_solve(write_scene("tiny.toml", tiny_scene) + " -o " + single.string() + " --quiet --set run.max_steps=5").status == 0);
+  CHECK_THAT(read_text(single / "log.txt"), !Catch::Contains("contact:"));
+}
+
 TEST_CASE("A numerical failure is recorded in status.toml with exit status 3 and its reason", "[solve]") {
   // CFL 1 is beyond what uGIMP with nu = 0.4 tolerates (test_solve_tool.cpp).
   const std::string scene = write_scene("blowup.toml", tiny_scene);
