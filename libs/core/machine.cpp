@@ -3,39 +3,53 @@
 #include <sched.h>
 
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
+#include <vector>
+
+#include "core/text.hpp"
 
 namespace latmpm {
 namespace {
 
-// The value of the first "KEY : value" line of /proc/cpuinfo whose key is exactly KEY, with
-// runs of blanks made one; "" where there is none.
-std::string cpuinfo_value(const std::string& wanted) {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(cpuinfo, line)) {
+// The words of `text` with one blank between them ("model name\t: AMD  EPYC" has runs).
+std::string words_of(const std::string& text) {
+  std::istringstream in(text);
+  return joined(std::vector<std::string>(std::istream_iterator<std::string>(in), {}), " ");
+}
+
+// The first "KEY : value" line of /proc/cpuinfo for each key (the first processor's), in one
+// read; empty where the file is missing.
+std::map<std::string, std::string> cpuinfo() {
+  std::map<std::string, std::string> values;
+  std::ifstream file("/proc/cpuinfo");
+  for (std::string line; std::getline(file, line);) {
     const auto colon = line.find(':');
-    if (colon == std::string::npos) continue;
-    std::istringstream key_words(line.substr(0, colon)), value_words(line.substr(colon + 1));
-    std::string word, key, value;
-    while (key_words >> word) key += (key.empty() ? "" : " ") + word;
-    if (key != wanted) continue;
-    while (value_words >> word) value += (value.empty() ? "" : " ") + word;
-    return value;
+    if (colon != std::string::npos) values.emplace(words_of(line.substr(0, colon)), words_of(line.substr(colon + 1)));
   }
-  return "";
+  return values;
 }
 
 }  // namespace
 
 std::string cpu_model() {
-  std::string name = cpuinfo_value("model name");
-  if (name.empty()) name = "unknown";
-  // A virtual machine may name every generation alike ("AMD EPYC"); the family and model
-  // numbers tell a Zen 3 (25 1) from a Zen 4 (25 17). No comma: runs.csv is comma-separated.
-  const std::string family = cpuinfo_value("cpu family"), model = cpuinfo_value("model");
-  if (!family.empty() && !model.empty()) name += " (family " + family + " model " + model + ")";
-  return name;
+  // The machine does not change while a process runs: /proc/cpuinfo is read once.
+  static const std::string model = [] {
+    const auto info = cpuinfo();
+    auto value = [&](const char* key) {
+      const auto it = info.find(key);
+      return it == info.end() ? std::string() : it->second;
+    };
+    std::string name = value("model name");
+    if (name.empty()) name = "unknown";
+    // A virtual machine may name every generation alike ("AMD EPYC"); the family and model
+    // numbers tell a Zen 3 (25 1) from a Zen 4 (25 17). No comma: runs.csv is comma-separated.
+    const std::string family = value("cpu family"), number = value("model");
+    if (!family.empty() && !number.empty()) name += " (family " + family + " model " + number + ")";
+    return name;
+  }();
+  return model;
 }
 
 const char* vector_instruction_set() {

@@ -3,6 +3,7 @@
 #include <ctime>
 
 #include "core/hdf5_file.hpp"
+#include "core/text.hpp"
 
 namespace latmpm {
 
@@ -38,8 +39,7 @@ Provenance Provenance::for_run(const std::string& tool, int argc, const char* co
 }
 
 std::string Provenance::summary_line() const {
-  std::string inputs_text;
-  for (const auto& i : inputs) inputs_text += (inputs_text.empty() ? "" : ", ") + i;
+  const std::string inputs_text = joined(inputs);
   return created_utc + " " + tool + " " + version + ": " + command_line +
          (inputs_text.empty() ? "" : " (inputs: " + inputs_text + ")");
 }

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "core/errors.hpp"
+#include "core/text.hpp"
 #include "geometry/parameter_text.hpp"
 #include "geometry/plates.hpp"
 #include "geometry/unit_cell.hpp"
@@ -67,12 +68,6 @@ const CellType* find_cell(const std::string& name) {
   for (const auto& c : cell_types())
     if (name == c.name) return &c;
   return nullptr;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/text.hpp"
 #include "imperfect/direction.hpp"
 #include "imperfect/lattice_frame.hpp"
 
@@ -14,12 +15,6 @@ namespace latmpm {
 namespace {
 
 std::string mm(double metres) { return format_millimetres(metres, 6); }
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ",") + s;
-  return out;
-}
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -62,7 +57,7 @@ std::vector<int> resolve_bodies(const PointSet& points, const ShapePerturbation&
     for (const auto& name : p.bodies) {
       int index = points.body_index(name);
       if (index < 0)
-        throw InputError("--bodies", "", "no body '" + name + "' in " + where + " (its bodies: " + join(points.body_names) + ")");
+        throw InputError("--bodies", "", "no body '" + name + "' in " + where + " (its bodies: " + joined(points.body_names, ",") + ")");
       if (std::find(out.begin(), out.end(), index) == out.end()) out.push_back(index);
     }
     return out;
@@ -72,7 +67,7 @@ std::vector<int> resolve_bodies(const PointSet& points, const ShapePerturbation&
     if (int index = points.body_index(name); index >= 0) out.push_back(index);
   if (out.empty())
     throw InputError(where, "/points/body_names", "has none of the bodies " + shape_label(p.type) + " moves by default (" +
-                     join(defaults) + "); name them with --bodies");
+                     joined(defaults, ",") + "); name them with --bodies");
   return out;
 }
 
@@ -225,7 +220,7 @@ std::vector<Eigen::Vector3d> shape_displacements(const PointSet& points, const S
   std::vector<std::string> names;
   for (int b : bodies) names.push_back(points.body_names[b]);
   if (!(largest_shape > 0))
-    throw InputError(where, "/points/position", shape_label(p.type) + " moves no point of bodies " + join(names) +
+    throw InputError(where, "/points/position", shape_label(p.type) + " moves no point of bodies " + joined(names, ",") +
                                                    " (they lie where the field is zero)");
   r.scale = 1.0 / largest_shape;
   // |∇u| = |a| s |∇f| because u = a s f e is f's gradient times a unit vector.
@@ -250,7 +245,7 @@ std::vector<Eigen::Vector3d> shape_displacements(const PointSet& points, const S
   os.precision(8);
   os << shape_label(p.type) << ": amount " << mm(p.amount) << " along "
      << (p.type == ShapeType::curved_top_base ? "z, curved across " : "") << describe_direction(p.direction)
-     << ", bodies " << join(names) << "; u = amount * s * f, " << field.formula << ", s = " << r.scale
+     << ", bodies " << joined(names, ",") << "; u = amount * s * f, " << field.formula << ", s = " << r.scale
      << "; max |grad u| = " << r.largest_gradient << "; " << r.moved_points << " points moved";
   r.record = os.str();
   return u;

@@ -16,6 +16,7 @@
 #include "core/progress.hpp"
 #include "core/tool_main.hpp"
 #include "core/number_text.hpp"
+#include "core/text.hpp"
 #include "mpm/checkpoint_io.hpp"
 #include "mpm/simulation.hpp"
 #include "points/point_set.hpp"
@@ -180,14 +181,9 @@ SolveSummary SolveRun::run(const std::string& run_dir) {
                       (scene_.settings.ddmp_stabilization > 0 ? " of the elastic moduli" : " (Paper A as printed)")
                 : std::string()));
   if (const auto& contact = scene_.settings.field_contact; contact.enabled) {
-    auto joined = [](const std::vector<std::string>& names) {
-      std::string text;
-      for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
-      return text.empty() ? std::string("none") : text;
-    };
-    log.line("contact: a velocity field per body and per point group (" + joined(contact.groups) + "), friction " +
-             format_number("%g", contact.friction) + ", fill " + format_number("%g", contact.fill) + ", bonded bodies " +
-             joined(contact.bonded_bodies));
+    log.line("contact: a velocity field per body and per point group (" + listed_or_none(contact.groups) +
+             "), friction " + format_number("%g", contact.friction) + ", fill " + format_number("%g", contact.fill) +
+             ", bonded bodies " + listed_or_none(contact.bonded_bodies));
   }
   // The stable step, not next_time_step(): that one throws for a fixed step above the limit,
   // which the stepping loop below reports with everything saved.

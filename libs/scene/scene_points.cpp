@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/hdf5_file.hpp"
 #include "core/provenance.hpp"
+#include "core/text.hpp"
 
 namespace latmpm {
 namespace {
@@ -40,12 +41,6 @@ void append(PointSet& all, const PointSet& part, const std::vector<int32_t>& bod
     for (size_t p : kept) merged.push_back(mask[p]);
   }
   for (const auto& [key, value] : part.parameters) all.parameters.emplace(key, value);
-}
-
-std::string list(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
-  return text.empty() ? "none" : text;
 }
 
 int omitted_index(const Scene& scene, const std::string& name) {
@@ -101,12 +96,12 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
     if (!has_points[b])
       throw InputError(scene.bodies[b].where, "bodies." + scene.bodies[b].name,
                        "no point file holds a body named '" + scene.bodies[b].name +
-                           "' (the files hold: " + list(names_in_files) + ")");
+                           "' (the files hold: " + listed_or_none(names_in_files) + ")");
   for (size_t b = 0; b < scene.omitted_bodies.size(); ++b)
     if (!has_omitted_points[b])
       throw InputError(scene.omitted_bodies[b].where, "bodies." + scene.omitted_bodies[b].name,
                        "no point file holds a body named '" + scene.omitted_bodies[b].name +
-                           "' to omit (the files hold: " + list(names_in_files) + ")");
+                           "' to omit (the files hold: " + listed_or_none(names_in_files) + ")");
   // A held layer must exist: a misspelt tag would otherwise leave the body free.
   for (size_t b = 0; b < scene.bodies.size(); ++b) {
     const BodySpec& body = scene.bodies[b];
@@ -120,7 +115,7 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       for (const auto& [name, mask] : all.tags) tags.push_back(name);
       throw InputError(body.hold_where, "bodies." + body.name + ".hold.tag",
                        "no point of body '" + body.name + "' carries the tag '" + body.hold_tag +
-                           "' (the point files' tags: " + (tags.empty() ? std::string("none") : list(tags)) + ")");
+                           "' (the point files' tags: " + listed_or_none(tags) + ")");
     }
   }
   // A record layer the scene names must exist: a misspelt tag would record a load of 0.
@@ -134,7 +129,7 @@ PointSet load_scene_points(const Scene& scene, Provenance* provenance) {
       for (const auto& [name, mask] : all.tags) tags.push_back(name);
       throw InputError(scene.record_where, "output.record_tag",
                        "no point carries the tag '" + scene.settings.record_tag + "' (the point files' tags: " +
-                           (tags.empty() ? std::string("none") : list(tags)) + ")");
+                           listed_or_none(tags) + ")");
     }
   }
   return all;

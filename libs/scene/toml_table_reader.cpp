@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/text.hpp"
+
 namespace latmpm::scene_toml {
 namespace {
 
@@ -265,9 +267,7 @@ std::string TableReader::choice(const std::string& key, const std::vector<std::s
                                 const std::string& fallback) {
   std::string value = fallback.empty() ? text(key) : text(key, fallback);
   if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-    std::string list;
-    for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    fail(key, "'" + value + "' is not one of: " + list);
+    fail(key, "'" + value + "' is not one of: " + joined(allowed));
   }
   return value;
 }
@@ -343,8 +343,7 @@ void TableReader::replace_text(const std::string& key, const std::string& value)
 void TableReader::finish() const {
   for (const std::string& key : keys()) {
     if (known_.count(key)) continue;
-    std::string list;
-    for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+    const std::string list = joined(known_);
     std::string here = path_.empty() ? "at the top level" : "in [" + path_ + "]";
     throw InputError(where(key), key_path(key),
                      "unknown key " + here + (list.empty() ? "" : " (expected one of: " + list + ")"));

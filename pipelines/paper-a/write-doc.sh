@@ -318,7 +318,8 @@ pct() { awk -v a="$1" 'BEGIN { if (a != "") { p = sprintf("%.0f", 100 * a); if (
     table="pipelines/$e/cases-$mode.txt" r="results/$e/$mode/runs.csv"
     [ -f "$table" ] || continue
     all=$(bash "$here/../common/case-table.sh" list "$table" ugimp,ddmp | cut -d'|' -f1)
-    done_cases=$([ -f "$r" ] && awk -F, '!/^#/ && !h { h = 1; next } !/^#/ && $2 == "finished" { print $1 }' "$r" || true)
+    done_cases=$([ -f "$r" ] && for l in $(labels "$r"); do
+      [ "$(post_metric "$r" "$l" status)" = finished ] && echo "$l"; done || true)
     missing_cases=$(comm -23 <(sort <<< "$all") <(sort <<< "$done_cases") | tr '\n' ' ' | sed 's/ $//')
     n_all=$(wc -w <<< "$all") n_missing=$(wc -w <<< "$missing_cases")
     if [ "$n_missing" -eq 0 ]; then
