@@ -49,13 +49,13 @@ struct BucketBuffer {
   int ddmp_offset(int i, int j, int k) const {
     return (((i - origin[0]) * width + (j - origin[1])) * width + (k - origin[2])) * ddmp_values;
   }
-  // The `ddmp` values of corner l (bits x, y, z of l) of the cell whose lowest node is `base`.
-  Real* ddmp_corner(const int base[3], int l) {
-    return ddmp.data() + ddmp_offset(base[0] + (l >> 2), base[1] + ((l >> 1) & 1), base[2] + (l & 1));
+  // Offset of corner l (bits x, y, z of l) of a cell from the cell's lowest node in `ddmp`.
+  static constexpr int ddmp_corner_offset(int l) {
+    return (((l >> 2) * width + ((l >> 1) & 1)) * width + (l & 1)) * ddmp_values;
   }
-  const Real* ddmp_corner(const int base[3], int l) const {
-    return ddmp.data() + ddmp_offset(base[0] + (l >> 2), base[1] + ((l >> 1) & 1), base[2] + (l & 1));
-  }
+  // The `ddmp` values of the cell whose lowest node is `base`; corner l at ddmp_corner_offset(l).
+  Real* ddmp_cell(const int base[3]) { return ddmp.data() + ddmp_offset(base[0], base[1], base[2]); }
+  const Real* ddmp_cell(const int base[3]) const { return ddmp.data() + ddmp_offset(base[0], base[1], base[2]); }
 };
 
 // First grid block (per axis) a bucket's buffer overlaps.

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "mpm/bucket_buffer.hpp"
@@ -42,6 +43,9 @@ struct DdmpNodalValues {
   std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
   std::vector<uint64_t> handing;                       // per block: the nodes that hand on
   std::vector<uint64_t> sizeable_mask, mass_mask;      // per block: nodes with mass ≥ the small mass, > 0
+  // mass_mask is this step's: find_ddmp_small_mass_nodes ran after the step's grid was
+  // prepared (the mass mapped by its scatter, before any node handed its mass on).
+  bool mass_mask_current = false;
   std::array<std::vector<uint32_t>, 27> handing_by_colour;  // blocks with nodes handing on, by coordinates mod 3
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
   std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
@@ -67,51 +71,49 @@ inline int table_index(const Bucket& b, int i, int j, int k) {
 }
 
 // `Components` values of the nodes at local coordinates −Reach … bw − 1 + Reach around a
-// block (index local + Reach): value c of node n of block b is get(b, n)[c]; zero in
-// inactive blocks. The smoothing passes read one node around (Reach 1).
+// block, component by component: value c of halo node (i, j, k) (local + Reach) at
+// v[c][i][j][k], so that the smoothing passes run along whole rows of one component (a row
+// of a block is 4 nodes: one vector of 4 doubles). The smoothing passes read one node around
+// (Reach 1).
 template <int Reach, int Components>
 struct BlockHalo {
   static constexpr int width = bw + 2 * Reach;
-  Real v[width][width][width][Components];
-  const Real* at(int li, int lj, int lk) const { return v[li + Reach][lj + Reach][lk + Reach]; }
+  alignas(64) Real v[Components][width][width][width];
 };
 template <int Components>
 using NodeHalo = BlockHalo<1, Components>;
 
-// Per axis, the halo splits into three segments: `Reach` nodes of the block below, the
-// block's own `bw`, `Reach` of the block above; the halo is visited segment box by segment
-// box (27 boxes, runs along k), with no per-node block lookup: fn(halo node, neighbour
-// block or −1, node in it).
-template <int Reach, class Fn>
-void for_each_halo_node(const DdmpNodalValues& nv, size_t block, Fn&& fn) {
-  static_assert(Reach <= bw, "a halo reaches at most one block away");
-  constexpr int first[3] = {bw - Reach, 0, 0};  // first local index in the neighbour, per segment
-  constexpr int count[3] = {Reach, bw, Reach};
-  constexpr int start[3] = {0, Reach, Reach + bw};  // first halo index, per segment
-  for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int dk = -1; dk <= 1; ++dk) {
-        const int nb = nv.neighbours[block][size_t(neighbour_index(di, dj, dk))];
-        const int si = di + 1, sj = dj + 1, sk = dk + 1;
-        for (int i = 0; i < count[si]; ++i)
-          for (int j = 0; j < count[sj]; ++j)
-            for (int k = 0; k < count[sk]; ++k)
-              fn(start[si] + i, start[sj] + j, start[sk] + k, nb, ((first[si] + i) * bw + (first[sj] + j)) * bw + (first[sk] + k));
-      }
+// box(si, sj, sk) for the 27 segment boxes of a halo (below, own, above per axis: 0, 1, 2),
+// each index a compile-time constant.
+template <class Box, int... S>
+[[gnu::always_inline]] inline void for_each_halo_box(Box& box, std::integer_sequence<int, S...>) {
+  (box(std::integral_constant<int, S / 9>{}, std::integral_constant<int, (S / 3) % 3>{},
+       std::integral_constant<int, S % 3>{}),
+   ...);
 }
 
-// Copies the halo's values: value c of node n of block b is get(b, n)[c]; zero in inactive blocks.
-template <int Reach, int Components, class Get>
-void load_halo(const DdmpNodalValues& nv, size_t block, Get get, BlockHalo<Reach, Components>& halo) {
-  for_each_halo_node<Reach>(nv, block, [&](int hi, int hj, int hk, int nb, int n) {
-    Real* out = halo.v[hi][hj][hk];
-    if (nb < 0) {
-      for (int c = 0; c < Components; ++c) out[c] = 0;
-      return;
-    }
-    const Real* in = get(size_t(nb), n);
-    for (int c = 0; c < Components; ++c) out[c] = in[c];
-  });
+// Copies the halo's values: value c of node n of block nb is first_value(nb)[n · Stride + c];
+// zero in inactive blocks. Per axis the halo splits into three segments — `Reach` nodes of
+// the block below, the block's own `bw`, `Reach` of the block above — so it is 27 boxes,
+// each from one block; every box's loops have fixed counts (a template per box), and the
+// block's own 64 nodes are one of them.
+template <int Reach, int Components, int Stride, class FirstValue>
+void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, BlockHalo<Reach, Components>& halo) {
+  static_assert(Reach <= bw, "a halo reaches at most one block away");
+  const auto box = [&](auto si, auto sj, auto sk) __attribute__((always_inline)) {
+    // Per segment s (0 below, 1 own, 2 above): first local index in the block, count, first halo index.
+    constexpr int first[3] = {bw - Reach, 0, 0}, count[3] = {Reach, bw, Reach}, start[3] = {0, Reach, Reach + bw};
+    constexpr int I = decltype(si)::value, J = decltype(sj)::value, K = decltype(sk)::value;
+    const int nb = nv.neighbours[block][size_t(neighbour_index(I - 1, J - 1, K - 1))];
+    const Real* in = nb < 0 ? nullptr : first_value(size_t(nb));
+    for (int c = 0; c < Components; ++c)
+      for (int i = 0; i < count[I]; ++i)
+        for (int j = 0; j < count[J]; ++j)
+          for (int k = 0; k < count[K]; ++k)
+            halo.v[c][start[I] + i][start[J] + j][start[K] + k] =
+                in ? in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c] : Real(0);
+  };
+  for_each_halo_box(box, std::make_integer_sequence<int, 27>{});
 }
 
 // The smoothing integral's 1D factors (shape_ddmp.hpp) as operators along one axis of a
@@ -128,20 +130,36 @@ inline Real smooth_slope(Real below, Real above) {
   return ddmp_smoothing_slope(1) * below + ddmp_smoothing_slope(-1) * above;
 }
 
-// out[a][b][c][q] = op_q(in along one axis) over a box: Out components from In components,
-// the three taps of node (a, b, c) along `Axis` at index ±1 of the input (whose extent along
-// that axis is 2 more than the output's). `op(taps, out)` with taps[t][q] = in at tap t.
-template <int Axis, int NA, int NB, int NC, int In, int Out, class Op>
-void pass_along(const Real (&in)[NA + 2 * (Axis == 0)][NB + 2 * (Axis == 1)][NC + 2 * (Axis == 2)][In],
-                Real (&out)[NA][NB][NC][Out], Op op) {
+// One component of a box, and the same box with one more node on each side along `Axis`:
+// the input of a pass along that axis.
+template <int NA, int NB, int NC>
+using Plane = Real[NA][NB][NC];
+template <int Axis, int NA, int NB, int NC>
+using PassInput = Real[NA + 2 * (Axis == 0)][NB + 2 * (Axis == 1)][NC + 2 * (Axis == 2)];
+
+// out[a][b][c] = op(u₋, u₀, u₊), the three taps of node (a, b, c) along `Axis` (input index
+// +0, +1, +2 along it). Rows along c are contiguous in both: the compiler makes each row one
+// vector operation.
+template <int Axis, int NA, int NB, int NC, class Op>
+[[gnu::always_inline]] inline void pass_along(const PassInput<Axis, NA, NB, NC>& in, Plane<NA, NB, NC>& out, Op op) {
+  constexpr int da = Axis == 0, db = Axis == 1, dc = Axis == 2;
   for (int a = 0; a < NA; ++a)
     for (int b = 0; b < NB; ++b)
-      for (int c = 0; c < NC; ++c) {
-        const Real* taps[3];
-        for (int t = 0; t < 3; ++t)
-          taps[t] = in[a + (Axis == 0 ? t : 0)][b + (Axis == 1 ? t : 0)][c + (Axis == 2 ? t : 0)];
-        op(taps, out[a][b][c]);
-      }
+      for (int c = 0; c < NC; ++c)
+        out[a][b][c] = op(in[a][b][c], in[a + da][b + db][c + dc], in[a + 2 * da][b + 2 * db][c + 2 * dc]);
+}
+// The three operators of the header comment on one component.
+template <int Axis, int NA, int NB, int NC>
+[[gnu::always_inline]] inline void mass_along(const PassInput<Axis, NA, NB, NC>& in, Plane<NA, NB, NC>& out) {
+  pass_along<Axis, NA, NB, NC>(in, out, [](Real below, Real at, Real above) { return smooth_mass(below, at, above); });
+}
+template <int Axis, int NA, int NB, int NC>
+[[gnu::always_inline]] inline void slope_along(const PassInput<Axis, NA, NB, NC>& in, Plane<NA, NB, NC>& out) {
+  pass_along<Axis, NA, NB, NC>(in, out, [](Real below, Real, Real above) { return smooth_slope(below, above); });
+}
+template <int Axis, int NA, int NB, int NC>
+[[gnu::always_inline]] inline void reverse_slope_along(const PassInput<Axis, NA, NB, NC>& in, Plane<NA, NB, NC>& out) {
+  pass_along<Axis, NA, NB, NC>(in, out, [](Real below, Real, Real above) { return smooth_slope(above, below); });
 }
 }  // namespace ddmp_grid_detail
 
@@ -157,6 +175,7 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   nv.handing.assign(blocks, 0);
   for (auto& list : nv.handing_by_colour) list.clear();
   nv.neighbours.resize(blocks);
+  nv.mass_mask_current = false;
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);
     for (int dx = -1; dx <= 1; ++dx)
@@ -190,81 +209,84 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<6> s;
-    load_halo<1, 6>(nv, b, [&](size_t nb, int n) { return nv.node(nb, n); }, s);
-    // z: M_z of the 6 components, D_z of σxz, σyz, σzz.
-    Real z[bw + 2][bw + 2][bw][9];
-    pass_along<2, bw + 2, bw + 2, bw, 6, 9>(s.v, z, [](const Real* const* t, Real* o) {
-      for (int q = 0; q < 6; ++q) o[q] = smooth_mass(t[0][q], t[1][q], t[2][q]);
-      o[6] = smooth_slope(t[0][4], t[2][4]);
-      o[7] = smooth_slope(t[0][3], t[2][3]);
-      o[8] = smooth_slope(t[0][2], t[2][2]);
-    });
+    load_halo<1, 6, DdmpNodalValues::count>(nv, b, [&](size_t nb) { return nv.node(nb, 0); }, s);
+    constexpr int w = bw + 2;
+    // z: M_z of the 6 components, D_z of σxz, σyz, σzz (Voigt xx yy zz yz xz xy: 0 1 2 3 4 5).
+    alignas(64) Real z[9][w][w][bw];
+    for (int q = 0; q < 6; ++q) mass_along<2, w, w, bw>(s.v[q], z[q]);
+    slope_along<2, w, w, bw>(s.v[4], z[6]);
+    slope_along<2, w, w, bw>(s.v[3], z[7]);
+    slope_along<2, w, w, bw>(s.v[2], z[8]);
     // y: M_y M_z (xx, xy, xz), D_y M_z (xy, yy, yz), M_y D_z (xz, yz, zz).
-    Real y[bw + 2][bw][bw][9];
-    pass_along<1, bw + 2, bw, bw, 9, 9>(z, y, [](const Real* const* t, Real* o) {
-      o[0] = smooth_mass(t[0][0], t[1][0], t[2][0]);
-      o[1] = smooth_mass(t[0][5], t[1][5], t[2][5]);
-      o[2] = smooth_mass(t[0][4], t[1][4], t[2][4]);
-      o[3] = smooth_slope(t[0][5], t[2][5]);
-      o[4] = smooth_slope(t[0][1], t[2][1]);
-      o[5] = smooth_slope(t[0][3], t[2][3]);
-      for (int q = 6; q < 9; ++q) o[q] = smooth_mass(t[0][q], t[1][q], t[2][q]);
-    });
+    alignas(64) Real y[9][w][bw][bw];
+    mass_along<1, w, bw, bw>(z[0], y[0]);
+    mass_along<1, w, bw, bw>(z[5], y[1]);
+    mass_along<1, w, bw, bw>(z[4], y[2]);
+    slope_along<1, w, bw, bw>(z[5], y[3]);
+    slope_along<1, w, bw, bw>(z[1], y[4]);
+    slope_along<1, w, bw, bw>(z[3], y[5]);
+    for (int q = 6; q < 9; ++q) mass_along<1, w, bw, bw>(z[q], y[q]);
     // x: f_a = D_x (M_y M_z σ_xa) + M_x (D_y M_z σ_ya) + M_x (M_y D_z σ_za).
-    Real f[bw][bw][bw][3];
-    pass_along<0, bw, bw, bw, 9, 3>(y, f, [](const Real* const* t, Real* o) {
-      for (int a = 0; a < 3; ++a)
-        o[a] = smooth_slope(t[0][a], t[2][a]) + smooth_mass(t[0][3 + a], t[1][3 + a], t[2][3 + a]) +
-               smooth_mass(t[0][6 + a], t[1][6 + a], t[2][6 + a]);
-    });
+    alignas(64) Real f[3][bw][bw][bw];
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < bw; ++i)
+        for (int j = 0; j < bw; ++j)
+          for (int k = 0; k < bw; ++k)
+            f[a][i][j][k] = smooth_slope(y[a][i][j][k], y[a][i + 2][j][k]) +
+                            smooth_mass(y[3 + a][i][j][k], y[3 + a][i + 1][j][k], y[3 + a][i + 2][j][k]) +
+                            smooth_mass(y[6 + a][i][j][k], y[6 + a][i + 1][j][k], y[6 + a][i + 2][j][k]);
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real* node = grid.block(b) + SparseGrid::node_offset(i, j, k);
-          for (int a = 0; a < 3; ++a) node[lane::force + a] += inv_h * f[i][j][k][a];
+          for (int a = 0; a < 3; ++a) node[lane::force + a] += inv_h * f[a][i][j][k];
         }
   });
 }
 
 // L_j = (1/h³) Σ_i v_i ⊗ h² G(i − j) from the grid velocities in lanes velocity_lane … + 2,
 // into the nodal values (row-major): L_rc = D'_c-separable passes of v_r, as the force.
+// Only a node with mass is a corner j of a point's cell with S_j > 0, so a block none of
+// whose nodes had mass this step (the layer of blocks DDMP adds around the points, for the
+// smoothed force) gets L = 0 without the passes: the points read its nodes, if at all, with
+// weight 0.
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const Real inv_h = 1 / h;
+  const bool skip_massless = nv.mass_mask_current && nv.mass_mask.size() == grid.block_count();
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
+    if (skip_massless && nv.mass_mask[b] == 0) {
+      std::fill_n(nv.node(b, 0), SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));
+      return;
+    }
     NodeHalo<3> v;
-    load_halo<1, 3>(nv, b, [&](size_t nb, int n) { return grid.block(nb) + n * lane::count + velocity_lane; }, v);
+    load_halo<1, 3, lane::count>(nv, b, [&](size_t nb) { return grid.block(nb) + velocity_lane; }, v);
+    constexpr int w = bw + 2;
     // z: M_z v, D'_z v.
-    Real z[bw + 2][bw + 2][bw][6];
-    pass_along<2, bw + 2, bw + 2, bw, 3, 6>(v.v, z, [](const Real* const* t, Real* o) {
-      for (int r = 0; r < 3; ++r) {
-        o[r] = smooth_mass(t[0][r], t[1][r], t[2][r]);
-        o[3 + r] = smooth_slope(t[2][r], t[0][r]);
-      }
-    });
+    alignas(64) Real z[6][w][w][bw];
+    for (int r = 0; r < 3; ++r) {
+      mass_along<2, w, w, bw>(v.v[r], z[r]);
+      reverse_slope_along<2, w, w, bw>(v.v[r], z[3 + r]);
+    }
     // y: M_y M_z v, D'_y M_z v, M_y D'_z v.
-    Real y[bw + 2][bw][bw][9];
-    pass_along<1, bw + 2, bw, bw, 6, 9>(z, y, [](const Real* const* t, Real* o) {
-      for (int r = 0; r < 3; ++r) {
-        o[r] = smooth_mass(t[0][r], t[1][r], t[2][r]);
-        o[3 + r] = smooth_slope(t[2][r], t[0][r]);
-        o[6 + r] = smooth_mass(t[0][3 + r], t[1][3 + r], t[2][3 + r]);
-      }
-    });
+    alignas(64) Real y[9][w][bw][bw];
+    for (int r = 0; r < 3; ++r) {
+      mass_along<1, w, bw, bw>(z[r], y[r]);
+      reverse_slope_along<1, w, bw, bw>(z[r], y[3 + r]);
+      mass_along<1, w, bw, bw>(z[3 + r], y[6 + r]);
+    }
     // x: L_r0 = D'_x M_y M_z v_r, L_r1 = M_x D'_y M_z v_r, L_r2 = M_x M_y D'_z v_r.
-    Real L[bw][bw][bw][9];
-    pass_along<0, bw, bw, bw, 9, 9>(y, L, [](const Real* const* t, Real* o) {
-      for (int r = 0; r < 3; ++r) {
-        o[r * 3 + 0] = smooth_slope(t[2][r], t[0][r]);
-        o[r * 3 + 1] = smooth_mass(t[0][3 + r], t[1][3 + r], t[2][3 + r]);
-        o[r * 3 + 2] = smooth_mass(t[0][6 + r], t[1][6 + r], t[2][6 + r]);
-      }
-    });
+    alignas(64) Real L[9][bw][bw][bw];
+    for (int r = 0; r < 3; ++r) {
+      reverse_slope_along<0, bw, bw, bw>(y[r], L[r * 3 + 0]);
+      mass_along<0, bw, bw, bw>(y[3 + r], L[r * 3 + 1]);
+      mass_along<0, bw, bw, bw>(y[6 + r], L[r * 3 + 2]);
+    }
     for (int i = 0; i < bw; ++i)
       for (int j = 0; j < bw; ++j)
         for (int k = 0; k < bw; ++k) {
           Real* out = nv.node(b, (i * bw + j) * bw + k);
-          for (int c = 0; c < 9; ++c) out[c] = inv_h * L[i][j][k][c];
+          for (int c = 0; c < 9; ++c) out[c] = inv_h * L[c][i][j][k];
         }
   });
 }
@@ -304,10 +326,11 @@ inline void add_ddmp_box_to_grid(const Bucket& b, const BlockTable& table, Bucke
 // (minus_volume = −V, σ in Voigt order).
 inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_volume, const SymTensor& s,
                                        BucketBuffer& buffer) {
+  Real* cell = buffer.ddmp_cell(st.base);
   for (int l = 0; l < 8; ++l) {
     const Real c = st.corner[l] * minus_volume;
     if (c == 0) continue;
-    Real* node = buffer.ddmp_corner(st.base, l);
+    Real* node = cell + BucketBuffer::ddmp_corner_offset(l);
     for (int k = 0; k < 6; ++k) node[k] += c * s[k];
   }
 }
@@ -315,8 +338,9 @@ inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_v
 // The point's smoothed part of L̄: (1 − α) Σ_j S_j L_j over its cell's corners, row-major.
 inline void ddmp_corner_velocity_gradient(const DdmpCornerStencil& st, const BucketBuffer& buffer, Real L[9]) {
   for (int k = 0; k < 9; ++k) L[k] = 0;
+  const Real* cell = buffer.ddmp_cell(st.base);
   for (int l = 0; l < 8; ++l) {
-    const Real* node = buffer.ddmp_corner(st.base, l);
+    const Real* node = cell + BucketBuffer::ddmp_corner_offset(l);
     for (int k = 0; k < 9; ++k) L[k] += st.corner[l] * node[k];
   }
 }

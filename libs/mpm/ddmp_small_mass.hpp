@@ -358,6 +358,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
   for (auto& list : nv.handing_by_colour) list.clear();
   for (size_t b = 0; b < blocks; ++b)
     if (nv.handing[b]) nv.handing_by_colour[size_t(block_colour(grid.coord(b)))].push_back(uint32_t(b));
+  nv.mass_mask_current = true;
 }
 
 // Hands lanes [first, first + count) of every small-mass node on to its sizeable

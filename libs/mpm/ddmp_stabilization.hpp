@@ -22,7 +22,9 @@
 //   σ_s ← σ_s + dt [β C : sym(L − L̄) + W̄ σ_s − σ_s W̄],
 // and puts on the nodes the force conjugate to that rate, f_i = −V σ_s (∇S_i − ∇̄S_i)
 // = −V (1 − α) σ_s (∇S_i − Σ_j S_j/V_j ∫ S_j ∇S_i dV): the local part on the cell's 8 nodes,
-// the smoothed part through the nodal stress σ^d (ddmp_grid.hpp) with −σ_s. For a linear
+// the smoothed part through the nodal stress σ^d (ddmp_grid.hpp) with −σ_s (scatter_bucket
+// adds each to the point's own σ parts: one plain-gradient scatter of −V (α σ + (1 − α) σ_s)
+// and one corner scatter of σ − σ_s). For a linear
 // nodal velocity field (rigid motion included; the small-mass read-back extends a linear
 // field exactly past free surfaces) L = L̄ and σ_s stays zero;
 // for the null-space patterns it gives back β times linear MPM's stiffness. Its energy,
@@ -82,26 +84,6 @@ inline Real ddmp_stabilization_energy_density(const LinearElastic& moduli, const
   Real s[6];
   for (int k = 0; k < 6; ++k) s[k] = stress[k];
   return moduli.strain_energy_density(d, s);
-}
-
-// The local part of its force on the cell's 8 nodes: node force += −V (1 − α) σ_s ∇S_i.
-// first: the buffer's lanes of the cell's first node; strides as BucketBuffer's.
-template <int StrideI, int StrideJ, int Lanes, int ForceLane>
-inline void scatter_ddmp_stabilization_local(const DdmpCornerStencil& st, Real minus_volume,
-                                             const ParticleSymTensor& stress, Real h, Real* first) {
-  const Real c = minus_volume * (1 - st.alpha), inv_h = 1 / h;
-  const Real s[3][3] = {{Real(stress[0]), Real(stress[5]), Real(stress[4])},
-                        {Real(stress[5]), Real(stress[1]), Real(stress[3])},
-                        {Real(stress[4]), Real(stress[3]), Real(stress[2])}};
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      for (int k = 0; k < 2; ++k) {
-        const Real g[3] = {(i ? inv_h : -inv_h) * st.w[j][1] * st.w[k][2],
-                           st.w[i][0] * (j ? inv_h : -inv_h) * st.w[k][2],
-                           st.w[i][0] * st.w[j][1] * (k ? inv_h : -inv_h)};
-        Real* node = first + i * StrideI + j * StrideJ + k * Lanes;
-        for (int a = 0; a < 3; ++a) node[ForceLane + a] += c * (s[a][0] * g[0] + s[a][1] * g[1] + s[a][2] * g[2]);
-      }
 }
 
 }  // namespace latmpm::mpm

@@ -131,22 +131,25 @@ struct ScatterLanes {
   NodeLanes a, fx, fy, fz;
   Real minus_volume = 0;
 };
+// The force lanes of −V σ (Voigt order xx yy zz yz xz xy): fx, fy, fz are its rows.
+template <class Stress>
+[[gnu::always_inline]] inline void set_force_lanes(ScatterLanes& l, Real v, const Stress& s) {
+  l.fx[lane::force] = v * s[0], l.fx[lane::force + 1] = v * s[5], l.fx[lane::force + 2] = v * s[4];
+  l.fy[lane::force] = v * s[5], l.fy[lane::force + 1] = v * s[1], l.fy[lane::force + 2] = v * s[3];
+  l.fz[lane::force] = v * s[4], l.fz[lane::force + 1] = v * s[3], l.fz[lane::force + 2] = v * s[2];
+}
 template <class Mode>
 [[gnu::always_inline]] inline ScatterLanes scatter_lanes(const Particles& ps, size_t p) {
-  NodeLanes a{}, fx{}, fy{}, fz{};
-  Real v = 0;
+  ScatterLanes l{};
   const Real m = ps.mass[p];
-  if constexpr (Mode::mass) a[lane::mass] = m;
+  if constexpr (Mode::mass) l.a[lane::mass] = m;
   if constexpr (Mode::momentum_lane >= 0)
-    for (int c = 0; c < 3; ++c) a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
+    for (int c = 0; c < 3; ++c) l.a[Mode::momentum_lane + c] = m * ps.velocity[p][c];
   if constexpr (Mode::force) {
-    v = -Real(ps.volume0[p]) * Real(ps.deformation[p].determinant());
-    const auto& s = ps.stress[p];
-    fx[lane::force] = v * s[0], fx[lane::force + 1] = v * s[5], fx[lane::force + 2] = v * s[4];
-    fy[lane::force] = v * s[5], fy[lane::force + 1] = v * s[1], fy[lane::force + 2] = v * s[3];
-    fz[lane::force] = v * s[4], fz[lane::force + 1] = v * s[3], fz[lane::force + 2] = v * s[2];
+    l.minus_volume = -Real(ps.volume0[p]) * Real(ps.deformation[p].determinant());
+    set_force_lanes(l, l.minus_volume, ps.stress[p]);
   }
-  return {a, fx, fy, fz, v};
+  return l;
 }
 
 template <class Shape, class Mode>
@@ -203,44 +206,59 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
                 }
         }
         if (rigid) continue;  // rigid points carry no mass to the grid
-        const auto [a, fx, fy, fz, minus_volume] = scatter_lanes<Mode>(ps, p);
-        // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
-        // (with_trip_count; a run-time bound there changed the rounding of the results).
-        const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
-        for (int i = 0; i < ni; ++i)
-          for (int j = 0; j < nj; ++j) {
-            Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-            const Real wij = st.w[i][0] * st.w[j][1];
-            if constexpr (Mode::force) {
-              // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
-              const NodeLanes row_w =
-                  plus_scaled(plus_scaled(scaled(wij, a), st.dw[i][0] * st.w[j][1], fx), st.w[i][0] * st.dw[j][1], fy);
-              const NodeLanes row_d = scaled(wij, fz);
-              with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
-                for (int k = 0; k < nk; ++k)
-                  store_lanes(row + k * L,
-                              plus_scaled(plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w), st.dw[k][2], row_d));
-              });
-            } else {
-              const NodeLanes row_w = scaled(wij, a);
-              with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
-                for (int k = 0; k < nk; ++k)
-                  store_lanes(row + k * L, plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w));
-              });
+        ScatterLanes lanes = scatter_lanes<Mode>(ps, p);
+        // The tensor-product part: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz over the stencil's nodes.
+        const auto scatter_tensor = [&](const auto& st, const ScatterLanes& l) __attribute__((always_inline)) {
+          const auto& [a, fx, fy, fz, minus_volume] = l;
+          // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
+          // (with_trip_count; a run-time bound there changed the rounding of the results).
+          const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
+          for (int i = 0; i < ni; ++i)
+            for (int j = 0; j < nj; ++j) {
+              Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
+              const Real wij = st.w[i][0] * st.w[j][1];
+              if constexpr (Mode::force) {
+                // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
+                const NodeLanes row_w =
+                    plus_scaled(plus_scaled(scaled(wij, a), st.dw[i][0] * st.w[j][1], fx), st.w[i][0] * st.dw[j][1], fy);
+                const NodeLanes row_d = scaled(wij, fz);
+                with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                  for (int k = 0; k < nk; ++k)
+                    store_lanes(row + k * L,
+                                plus_scaled(plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w), st.dw[k][2], row_d));
+                });
+              } else {
+                const NodeLanes row_w = scaled(wij, a);
+                with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                  for (int k = 0; k < nk; ++k)
+                    store_lanes(row + k * L, plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w));
+                });
+              }
             }
+        };
+        if constexpr (Mode::force && Shape::smoothed_on_grid && !Shape::per_node_gradient) {
+          if (stabilized) {
+            // Stabilized DDMP (ddmp_stabilization.hpp) in two transfers instead of four: the α
+            // part −V σ α∇S_i and the stabilization's local part −V σ_s (1 − α) ∇S_i are one
+            // plain-gradient scatter of −V (α σ + (1 − α) σ_s); the smoothed parts of σ and
+            // −σ_s one corner scatter of σ − σ_s.
+            const ParticleSymTensor& stab = ps.ddmp_stabilization_stress[p];
+            const auto& stress = ps.stress[p];
+            SymTensor local, smoothed;
+            for (int c = 0; c < 6; ++c) {
+              local[c] = st.alpha * Real(stress[c]) + (1 - st.alpha) * Real(stab[c]);
+              smoothed[c] = Real(stress[c]) - Real(stab[c]);
+            }
+            set_force_lanes(lanes, lanes.minus_volume, local);
+            scatter_tensor(ddmp_plain_gradient_stencil(st, h), lanes);
+            scatter_ddmp_corner_stress(st, lanes.minus_volume, smoothed, buffer);
+            continue;
           }
-        if constexpr (Mode::force && Shape::smoothed_on_grid) {
-          // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
-          scatter_ddmp_corner_stress(st, minus_volume, ps.stress[p].template cast<Real>(), buffer);
-          if constexpr (!Shape::per_node_gradient)
-            if (stabilized) {
-              // The stabilization's force (ddmp_stabilization.hpp): −σ_s through σ^d, and its local part.
-              const ParticleSymTensor& s = ps.ddmp_stabilization_stress[p];
-              scatter_ddmp_corner_stress(st, minus_volume, SymTensor(-s.template cast<Real>()), buffer);
-              scatter_ddmp_stabilization_local<BucketBuffer::stride_i, BucketBuffer::stride_j, L, lane::force>(
-                  st, minus_volume, s, h, first);
-            }
         }
+        scatter_tensor(st, lanes);
+        if constexpr (Mode::force && Shape::smoothed_on_grid)
+          // DDMP on the grid (ddmp_grid.hpp): −(1 − α) S̃_j V σ to the cell's 8 corners j.
+          scatter_ddmp_corner_stress(st, lanes.minus_volume, ps.stress[p].template cast<Real>(), buffer);
         if constexpr (Mode::force && Shape::per_node_gradient) {
           // DDMP's gradient part that is not a tensor product (Paper A Eq. 4, 7): the smoothed
           // part per point, or the sub-points' α part (shape_ddmp_subpoints.hpp).
@@ -249,7 +267,8 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
               for (int k = 0; k < N; ++k) {
                 Real* node = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j + k * L;
                 const Vec3& g = st.smoothed[(i * N + j) * N + k];
-                store_lanes(node, plus_scaled(plus_scaled(plus_scaled(load_lanes(node), g[0], fx), g[1], fy), g[2], fz));
+                store_lanes(node, plus_scaled(plus_scaled(plus_scaled(load_lanes(node), g[0], lanes.fx), g[1], lanes.fy),
+                                              g[2], lanes.fz));
               }
         }
         }  // tensor-product stencils
@@ -482,7 +501,16 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
             for (int q = 0; q < n; ++q) stencils[q] = particle_stencil<Shape, gradient>(ps, g0 + uint32_t(q), h, buffer);
             for (int q = 0; q < n; ++q) {
               const auto& st = stencils[q];
-              const auto [aw, ax, ay, az] = interpolate<gradient>(st, buffer);
+              // Stabilized DDMP reads the plain gradient L = Σ v ⊗ ∇S_i (ddmp_stabilization.hpp)
+              // in the same sums, and its α part as α L: one interpolation instead of two.
+              [[maybe_unused]] bool plain_gradient = false;
+              if constexpr (gradient && Shape::smoothed_on_grid && !Shape::per_node_gradient) plain_gradient = stabilized;
+              const auto [aw, ax, ay, az] = [&] {
+                if constexpr (gradient && Shape::smoothed_on_grid && !Shape::per_node_gradient)
+                  if (plain_gradient) return interpolate<gradient>(ddmp_plain_gradient_stencil(st, h), buffer);
+                return interpolate<gradient>(st, buffer);
+              }();
+              [[maybe_unused]] Real plain_l[3][3];
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];
                 dv[a][q] = aw[lane::force + a];
@@ -493,21 +521,23 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 }
               }
               if constexpr (gradient && Shape::smoothed_on_grid) {
+                if constexpr (!Shape::per_node_gradient)
+                  if (plain_gradient)
+                    for (int r = 0; r < 3; ++r)
+                      for (int c = 0; c < 3; ++c) {
+                        plain_l[r][c] = grad_v[r][c][q];
+                        grad_v[r][c][q] *= st.alpha;  // the α part, α Σ v ⊗ ∇S_i
+                      }
                 // DDMP on the grid: + (1 − α) Σ_j S̃_j L_j, the nodal L of ddmp_grid.hpp.
                 Real L[9];
                 ddmp_corner_velocity_gradient(st, buffer, L);
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
                 if constexpr (!Shape::per_node_gradient)
-                  if (stabilized) {  // σ_s from the plain gradient against L̄ (ddmp_stabilization.hpp)
-                    const auto plain = interpolate<true>(ddmp_plain_gradient_stencil(st, h), buffer);
-                    Real plain_l[3][3], smoothed_l[3][3];
-                    for (int a = 0; a < 3; ++a) {
-                      plain_l[a][0] = plain.ax[Mode::gradient_lane + a];
-                      plain_l[a][1] = plain.ay[Mode::gradient_lane + a];
-                      plain_l[a][2] = plain.az[Mode::gradient_lane + a];
-                      for (int c = 0; c < 3; ++c) smoothed_l[a][c] = grad_v[a][c][q];
-                    }
+                  if (plain_gradient) {  // σ_s from the plain gradient against L̄ (ddmp_stabilization.hpp)
+                    Real smoothed_l[3][3];
+                    for (int r = 0; r < 3; ++r)
+                      for (int c = 0; c < 3; ++c) smoothed_l[r][c] = grad_v[r][c][q];
                     update_ddmp_stabilization_stress(body.ddmp_stabilization, plain_l, smoothed_l, dt,
                                                      ps.ddmp_stabilization_stress[g0 + uint32_t(q)]);
                   }
