@@ -208,30 +208,30 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
         if (rigid) continue;  // rigid points carry no mass to the grid
         ScatterLanes lanes = scatter_lanes<Mode>(ps, p);
         // The tensor-product part: node += S·a + ∂xS·fx + ∂yS·fy + ∂zS·fz over the stencil's nodes.
-        const auto scatter_tensor = [&](const auto& st, const ScatterLanes& l) __attribute__((always_inline)) {
+        const auto scatter_tensor = [&](const auto& stencil, const ScatterLanes& l) __attribute__((always_inline)) {
           const auto& [a, fx, fy, fz, minus_volume] = l;
           // The rows bounded by the stencil's counts, the nodes along a row by a fixed count
           // (with_trip_count; a run-time bound there changed the rounding of the results).
-          const int ni = nodes_along(st, 0), nj = nodes_along(st, 1);
+          const int ni = nodes_along(stencil, 0), nj = nodes_along(stencil, 1);
           for (int i = 0; i < ni; ++i)
             for (int j = 0; j < nj; ++j) {
               Real* row = first + i * BucketBuffer::stride_i + j * BucketBuffer::stride_j;
-              const Real wij = st.w[i][0] * st.w[j][1];
+              const Real wij = stencil.w[i][0] * stencil.w[j][1];
               if constexpr (Mode::force) {
                 // Per row: node += wz·(wij a + dxij fx + dyij fy) + dwz·(wij fz).
-                const NodeLanes row_w =
-                    plus_scaled(plus_scaled(scaled(wij, a), st.dw[i][0] * st.w[j][1], fx), st.w[i][0] * st.dw[j][1], fy);
+                const NodeLanes row_w = plus_scaled(plus_scaled(scaled(wij, a), stencil.dw[i][0] * stencil.w[j][1], fx),
+                                                    stencil.w[i][0] * stencil.dw[j][1], fy);
                 const NodeLanes row_d = scaled(wij, fz);
-                with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                with_trip_count<N>(nodes_along(stencil, 2), [&](auto nk) __attribute__((always_inline)) {
                   for (int k = 0; k < nk; ++k)
-                    store_lanes(row + k * L,
-                                plus_scaled(plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w), st.dw[k][2], row_d));
+                    store_lanes(row + k * L, plus_scaled(plus_scaled(load_lanes(row + k * L), stencil.w[k][2], row_w),
+                                                         stencil.dw[k][2], row_d));
                 });
               } else {
                 const NodeLanes row_w = scaled(wij, a);
-                with_trip_count<N>(nodes_along(st, 2), [&](auto nk) __attribute__((always_inline)) {
+                with_trip_count<N>(nodes_along(stencil, 2), [&](auto nk) __attribute__((always_inline)) {
                   for (int k = 0; k < nk; ++k)
-                    store_lanes(row + k * L, plus_scaled(load_lanes(row + k * L), st.w[k][2], row_w));
+                    store_lanes(row + k * L, plus_scaled(load_lanes(row + k * L), stencil.w[k][2], row_w));
                 });
               }
             }
