@@ -253,7 +253,7 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const Real inv_h = 1 / h;
-  const bool skip_massless = nv.mass_mask_current && nv.mass_mask.size() == grid.block_count();
+  const bool skip_massless = nv.mass_mask_current;  // find_ddmp_small_mass_nodes sized it to this step's blocks
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (skip_massless && nv.mass_mask[b] == 0) {
       std::fill_n(nv.node(b, 0), SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));

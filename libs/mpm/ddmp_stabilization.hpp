@@ -49,11 +49,11 @@ inline LinearElastic ddmp_stabilization_moduli(const MaterialParameters& m, Real
 }
 
 // The point's plain linear-MPM gradient: its cell's stencil with ∇S_i in place of α ∇S_i.
-inline DdmpCornerStencil ddmp_plain_gradient_stencil(const DdmpCornerStencil& st, Real h) {
+inline DdmpCornerStencil ddmp_plain_gradient_stencil(const DdmpCornerStencil& st, Real inv_h) {
   DdmpCornerStencil plain = st;
   for (int a = 0; a < 3; ++a) {
-    plain.dw[0][a] = -1 / h;
-    plain.dw[1][a] = 1 / h;
+    plain.dw[0][a] = -inv_h;
+    plain.dw[1][a] = inv_h;
   }
   return plain;
 }

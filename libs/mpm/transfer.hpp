@@ -158,6 +158,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
   buffer.wide_points.clear();
   constexpr int N = Shape::nodes_per_axis;
   constexpr int L = lane::count;
+  [[maybe_unused]] const Real inv_h = 1 / h;
   for (uint32_t r = b.run_begin; r < b.run_end; ++r) {
     const BodyRun& run = runs[r - b.run_begin];
     const bool rigid = bodies[run.body].role != BodyRole::deformable;
@@ -250,7 +251,7 @@ void scatter_bucket(const Bucket& b, const BodyRun* runs, const Particles& ps,
               smoothed[c] = Real(stress[c]) - Real(stab[c]);
             }
             set_force_lanes(lanes, lanes.minus_volume, local);
-            scatter_tensor(ddmp_plain_gradient_stencil(st, h), lanes);
+            scatter_tensor(ddmp_plain_gradient_stencil(st, inv_h), lanes);
             scatter_ddmp_corner_stress(st, lanes.minus_volume, smoothed, buffer);
             continue;
           }
@@ -503,11 +504,11 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
               const auto& st = stencils[q];
               // Stabilized DDMP reads the plain gradient L = Σ v ⊗ ∇S_i (ddmp_stabilization.hpp)
               // in the same sums, and its α part as α L: one interpolation instead of two.
-              [[maybe_unused]] bool plain_gradient = false;
-              if constexpr (gradient && Shape::smoothed_on_grid && !Shape::per_node_gradient) plain_gradient = stabilized;
+              constexpr bool grid_ddmp = gradient && Shape::smoothed_on_grid && !Shape::per_node_gradient;
+              const bool plain_gradient = grid_ddmp && stabilized;
               const auto [aw, ax, ay, az] = [&] {
-                if constexpr (gradient && Shape::smoothed_on_grid && !Shape::per_node_gradient)
-                  if (plain_gradient) return interpolate<gradient>(ddmp_plain_gradient_stencil(st, h), buffer);
+                if constexpr (grid_ddmp)
+                  if (plain_gradient) return interpolate<gradient>(ddmp_plain_gradient_stencil(st, inv_h), buffer);
                 return interpolate<gradient>(st, buffer);
               }();
               [[maybe_unused]] Real plain_l[3][3];
@@ -521,7 +522,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 }
               }
               if constexpr (gradient && Shape::smoothed_on_grid) {
-                if constexpr (!Shape::per_node_gradient)
+                if constexpr (grid_ddmp)
                   if (plain_gradient)
                     for (int r = 0; r < 3; ++r)
                       for (int c = 0; c < 3; ++c) {
@@ -533,7 +534,7 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                 ddmp_corner_velocity_gradient(st, buffer, L);
                 for (int r = 0; r < 3; ++r)
                   for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
-                if constexpr (!Shape::per_node_gradient)
+                if constexpr (grid_ddmp)
                   if (plain_gradient) {  // σ_s from the plain gradient against L̄ (ddmp_stabilization.hpp)
                     Real smoothed_l[3][3];
                     for (int r = 0; r < 3; ++r)
