@@ -41,6 +41,7 @@ struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
   std::vector<Real> values;
   std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
+  uint64_t distribution_generation = 0;                // of the memo the distributions point into
   std::vector<uint64_t> handing;                       // per block: the nodes that hand on
   std::vector<uint64_t> sizeable_mask, mass_mask;      // per block: nodes with mass ≥ the small mass, > 0
   // mass_mask is this step's: find_ddmp_small_mass_nodes ran after the step's grid was

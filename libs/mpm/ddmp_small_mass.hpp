@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
@@ -41,8 +42,9 @@ inline Real offset_weight(int x, int y, int z) {
   static constexpr Real w[3 * reach + 1] = {1, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625};
   return w[std::abs(x) + std::abs(y) + std::abs(z)];
 }
-// Bit of offset d in a node's 5×5×5 neighbourhood: (x + 2)·25 + (y + 2)·5 + z + 2.
-constexpr int box_bit(int x, int y, int z) { return (x + reach) * 25 + (y + reach) * 5 + (z + reach); }
+// Bit of offset d in a node's 5×5×5 neighbourhood: bit z + 2 of byte (x + 2)·5 + (y + 2), a
+// byte per column (x, y) of offsets along z (NeighbourPattern).
+constexpr int box_bit(int x, int y, int z) { return ((x + reach) * (2 * reach + 1) + (y + reach)) * 8 + (z + reach); }
 constexpr int own_mass_bit = box_bit(0, 0, 0);
 // The 124 offsets d ≠ 0 within two cells per axis: a node one cell outside a flat face sees
 // two layers of the material along the normal (a linear fit), and every node next to a
@@ -68,12 +70,17 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
 }
 // The pattern of a small-mass node's neighbourhood: bit box_bit(d) set when the neighbour at
 // offset d is sizeable, bit own_mass_bit when the node holds mass of its own. Its
-// distribution coefficients are a function of this alone (fit_distribution).
-__extension__ typedef unsigned __int128 PatternBits;  // 125 bits (GCC and Clang)
+// distribution coefficients are a function of this alone (fit_distribution). A byte per
+// column (x, y) of the 5×5 offsets, its bits 0–4 the offsets z = −2 … 2 (25 bytes in four
+// words): the pattern of a node is its column bytes of the block's rows shifted by the node's
+// z, word by word (MaskHalo::columns, find_ddmp_small_mass_nodes).
 struct NeighbourPattern {
-  PatternBits bits = 0;
+  static constexpr int words = 4;
+  std::array<uint64_t, words> bits{};
   bool operator==(const NeighbourPattern& o) const { return bits == o.bits; }
-  bool has(int bit) const { return (bits >> bit) & 1; }
+  bool has(int bit) const { return (bits[size_t(bit >> 6)] >> (bit & 63)) & 1; }
+  void set(int bit) { bits[size_t(bit >> 6)] |= uint64_t(1) << (bit & 63); }
+  void clear(int bit) { bits[size_t(bit >> 6)] &= ~(uint64_t(1) << (bit & 63)); }
   bool sizeable(const Offset& d) const { return has(box_bit(d.x, d.y, d.z)); }
 };
 struct NeighbourPatternHash {
@@ -85,19 +92,22 @@ struct NeighbourPatternHash {
       x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
       return x ^ (x >> 31);
     };
-    return size_t(mix(uint64_t(p.bits) ^ mix(uint64_t(p.bits >> 64) + 0x9E3779B97F4A7C15ull)));
+    uint64_t h = 0;
+    for (uint64_t w : p.bits) h = mix(h + w + 0x9E3779B97F4A7C15ull);
+    return size_t(h);
   }
 };
 using Fit = std::array<Real, 4>;
 }  // namespace ddmp_grid_detail
 
 // A pattern's shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the
-// hand-on and the read-back visit these, not all 124 offsets (for_each_share). The receivers
-// are the pattern's sizeable bits and the shares their coefficients in bit order (the
-// neighbour_offsets order), 8 bytes a share: a paper-size lattice has ≈ 54,000 patterns.
+// hand-on and the read-back visit these, not all 124 offsets (for_each_share). Per share its
+// coefficient and its receiver's step in a block's BlockNodeIndex from the handing node, in
+// the neighbour_offsets order, 10 bytes a share: a paper-size lattice has ≈ 54,000 patterns.
 struct DdmpDistribution {
-  ddmp_grid_detail::NeighbourPattern receivers;  // none: the node does not hand on
-  std::vector<Real> shares;
+  ddmp_grid_detail::NeighbourPattern pattern;  // the neighbourhood it belongs to
+  std::vector<Real> shares;                    // none: the node does not hand on
+  std::vector<int16_t> steps;
 };
 
 namespace ddmp_grid_detail {
@@ -113,41 +123,39 @@ struct BlockNodeIndex {
   uint32_t node[width * width * width];
   static int at(int i, int j, int k) { return ((i + reach) * width + (j + reach)) * width + (k + reach); }
 };
+// A line of 8 indices along z at a time: `reach` from the block below, the block's own 4,
+// `reach` from the block above.
 inline void load_block_node_index(const DdmpNodalValues& nv, size_t b, BlockNodeIndex& index) {
-  const auto block_step = [](int v) { return ((v + bw) >> 2) - 1; };  // −1, 0, 1
-  for (int i = -reach; i < bw + reach; ++i)
-    for (int j = -reach; j < bw + reach; ++j)
-      for (int k = -reach; k < bw + reach; ++k) {
-        const int nb = nv.neighbours[b][size_t(neighbour_index(block_step(i), block_step(j), block_step(k)))];
-        index.node[BlockNodeIndex::at(i, j, k)] =
-            uint32_t(size_t(nb < 0 ? 0 : nb) * SparseGrid::nodes_per_block + size_t((((i & 3) * bw) + (j & 3)) * bw + (k & 3)));
-      }
+  static_assert(reach == 2 && bw == 4, "a line is 2 + 4 + 2 nodes");
+  typedef uint32_t Line __attribute__((vector_size(BlockNodeIndex::width * sizeof(uint32_t))));
+  const auto& nb = nv.neighbours[b];
+  uint32_t first_node[27];  // of the blocks around, in neighbour_index order (z fastest)
+  for (size_t q = 0; q < 27; ++q) first_node[q] = uint32_t(nb[q] < 0 ? 0 : nb[q]) * uint32_t(SparseGrid::nodes_per_block);
+  const Line local_k = {2, 3, 0, 1, 2, 3, 0, 1};
+  for (int hi = 0; hi < BlockNodeIndex::width; ++hi)
+    for (int hj = 0; hj < BlockNodeIndex::width; ++hj) {
+      const int dx = hi < reach ? -1 : hi < reach + bw ? 0 : 1, dy = hj < reach ? -1 : hj < reach + bw ? 0 : 1;
+      const uint32_t* column = first_node + neighbour_index(dx, dy, -1);  // below, at, above
+      const Line blocks = {column[0], column[0], column[1], column[1], column[1], column[1], column[2], column[2]};
+      const Line line = blocks + uint32_t((((hi + reach) & 3) * bw + ((hj + reach) & 3)) * bw) + local_k;
+      std::memcpy(index.node + (hi * BlockNodeIndex::width + hj) * BlockNodeIndex::width, &line, sizeof line);
+    }
 }
-// The step in BlockNodeIndex of the offset d of bit box_bit(d) of a neighbourhood pattern.
-inline const std::array<int16_t, 125>& box_index_steps() {
-  static const auto table = [] {
-    std::array<int16_t, 125> out{};
-    for (int x = -reach; x <= reach; ++x)
-      for (int y = -reach; y <= reach; ++y)
-        for (int z = -reach; z <= reach; ++z)
-          out[size_t(box_bit(x, y, z))] = int16_t((x * BlockNodeIndex::width + y) * BlockNodeIndex::width + z);
-    return out;
-  }();
-  return table;
+// The step in BlockNodeIndex of the offset d.
+constexpr int16_t box_index_step(int x, int y, int z) {
+  return int16_t((x * BlockNodeIndex::width + y) * BlockNodeIndex::width + z);
 }
 // Calls fn(receiver, C_li) for the shares of the distribution of node n of the block whose
-// BlockNodeIndex is `index`, in bit order; receiver is the node's index in the grid.
+// BlockNodeIndex is `index`, in order; receiver is the node's index in the grid.
 // Inlined, so that a sum fn keeps over the shares stays in registers: called out of line,
 // the read-back's eight-lane sum went through the stack at every share on AVX2 (a
 // store-forwarding stall each; docs/benchmarks.md, "Eight-lane splats on AVX2").
 template <class Fn>
 [[gnu::always_inline]] inline void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
-  const auto& steps = box_index_steps();
   const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
   const Real* C = d.shares.data();
-  for (int word = 0; word < 2; ++word)
-    for (uint64_t bits = uint64_t(d.receivers.bits >> (64 * word)); bits; bits &= bits - 1)
-      fn(size_t(own[steps[size_t(__builtin_ctzll(bits) + 64 * word)]]), *C++);
+  const int16_t* step = d.steps.data();
+  for (size_t s = 0, count = d.shares.size(); s < count; ++s) fn(size_t(own[step[s]]), C[s]);
 }
 
 // C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
@@ -216,12 +224,13 @@ inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern
   const auto it = memo.find(pattern);
   if (it != memo.end()) return it->second;
   DdmpDistribution d;
+  d.pattern = pattern;
   const Fit fit = fit_distribution(pattern);
   if (fit[0] != 0)
-    for (const Offset& off : neighbour_offsets())  // in bit order, as for_each_share reads them
+    for (const Offset& off : neighbour_offsets())
       if (pattern.sizeable(off)) {
-        d.receivers.bits |= PatternBits(1) << box_bit(off.x, off.y, off.z);
         d.shares.push_back(distribution_coefficient(fit.data(), off.x, off.y, off.z, off.weight));
+        d.steps.push_back(box_index_step(off.x, off.y, off.z));
       }
   return memo.insert({pattern, std::move(d)}).first->second;
 }
@@ -249,23 +258,56 @@ inline const DdmpDistribution& remembered_distribution(const NeighbourPattern& p
 // Rows along z of a mask over a block's halo of `reach` nodes: row[hi][hj] bit hk for halo
 // coordinates (local + reach), from the masks of the 27 blocks around (0 where inactive).
 struct MaskHalo {
-  uint8_t row[bw + 2 * reach][bw + 2 * reach];
-  // Bits z + reach of the offsets z = −reach … reach (5 bits) at local (i + x, j + y, k + ·).
-  unsigned z_run(int i, int j, int k, int x, int y) const { return (row[i + x + reach][j + y + reach] >> k) & 31u; }
+  static constexpr int width = bw + 2 * reach;
+  static_assert(width == 8, "a line of rows is one 64-bit word");
+  alignas(8) uint8_t row[width][width];
+
+  // Row line hi as one word: byte hj is row[hi][hj].
+  uint64_t line(int hi) const {
+    uint64_t out;
+    std::memcpy(&out, row[hi], sizeof out);
+    return out;
+  }
+  // The rows around local column (i, j): byte (x + 2)·5 + (y + 2) is row[i + 2 + x][j + 2 + y],
+  // x, y = −2 … 2 — a node (i, j, k)'s neighbourhood pattern (NeighbourPattern) once each byte
+  // is shifted right by k and cut to its five bits.
+  std::array<uint64_t, NeighbourPattern::words> columns(int i, int j) const {
+    std::array<uint64_t, NeighbourPattern::words> out{};
+    for (int x = 0; x <= 2 * reach; ++x) {
+      const uint64_t piece = (line(i + x) >> (8 * j)) & 0xFF'FFFF'FFFFull;  // the five rows y = −2 … 2
+      const int at = 40 * x;                                                // five bytes a column x
+      out[size_t(at >> 6)] |= piece << (at & 63);
+      if ((at & 63) > 24) out[size_t(at >> 6) + 1] |= piece >> (64 - (at & 63));
+    }
+    return out;
+  }
+  // Bit n = (i·4 + j)·4 + k set when a node within one cell of local node (i, j, k) (the 27
+  // around it, itself included) has its bit set.
+  uint64_t near() const {
+    uint64_t out = 0;
+    for (int i = 0; i < bw; ++i) {
+      const uint64_t lines = line(i + reach - 1) | line(i + reach) | line(i + reach + 1);
+      const uint64_t across = lines | (lines >> 8) | (lines >> 16);  // byte hj: rows hj … hj + 2
+      for (int j = 0; j < bw; ++j) {
+        const unsigned rows = unsigned(across >> (8 * (j + reach - 1))) & 255u;  // y = −1 … 1 around j
+        out |= uint64_t(((rows >> (reach - 1)) | (rows >> reach) | (rows >> (reach + 1))) & 15u) << ((i * bw + j) * bw);
+      }
+    }
+    return out;
+  }
 };
 inline void load_mask_halo(const DdmpNodalValues& nv, size_t b, const std::vector<uint64_t>& mask, MaskHalo& halo) {
   static_assert(reach == 2 && bw == 4, "the row assembly takes 2 + 4 + 2 nodes per axis");
   const auto& nb = nv.neighbours[b];
-  const auto mask_of = [&](int dx, int dy, int dz) -> uint64_t {
-    const int n = nb[size_t(neighbour_index(dx, dy, dz))];
-    return n < 0 ? 0 : mask[size_t(n)];
-  };
-  for (int hi = 0; hi < bw + 2 * reach; ++hi)
-    for (int hj = 0; hj < bw + 2 * reach; ++hj) {
+  uint64_t around[27];  // the masks of the 27 blocks around, in neighbour_index order (z fastest)
+  for (size_t q = 0; q < 27; ++q) around[q] = nb[q] < 0 ? 0 : mask[size_t(nb[q])];
+  for (int hi = 0; hi < MaskHalo::width; ++hi)
+    for (int hj = 0; hj < MaskHalo::width; ++hj) {
       const int dx = hi < reach ? -1 : hi < reach + bw ? 0 : 1, dy = hj < reach ? -1 : hj < reach + bw ? 0 : 1;
       const int base = (((hi + reach) & 3) * bw + ((hj + reach) & 3)) * bw;  // the row's first bit in its block
-      const uint64_t below = mask_of(dx, dy, -1), at = mask_of(dx, dy, 0), above = mask_of(dx, dy, 1);
-      halo.row[hi][hj] = uint8_t(((below >> (base + 2)) & 3) | (((at >> base) & 15) << 2) | (((above >> base) & 3) << 6));
+      const uint64_t* column = around + neighbour_index(dx, dy, -1);        // below, at, above
+      halo.row[hi][hj] =
+          uint8_t(((column[0] >> (base + 2)) & 3) | (((column[1] >> base) & 15) << 2) | (((column[2] >> base) & 3) << 6));
     }
 }
 
@@ -324,32 +366,40 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
     with_mass[b] = positive;
     nv.handing[b] = candidates;
   });
+  // A node keeps its distribution from step to step while its pattern stays (most do): the
+  // pointers of nv.distributions stay valid until the memo is emptied.
+  const uint64_t generation = distribution_memo_generation().load(std::memory_order_relaxed);
+  if (nv.distribution_generation != generation) {
+    std::fill(nv.distributions.begin(), nv.distributions.end(), nullptr);
+    nv.distribution_generation = generation;
+  }
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
-    const uint64_t candidates = nv.handing[b];
+    uint64_t candidates = nv.handing[b];
     if (!candidates) return;
-    MaskHalo big, positive;
-    load_mask_halo(nv, b, sizeable, big);
+    MaskHalo positive;
     load_mask_halo(nv, b, with_mass, positive);
+    candidates &= positive.near();  // a node with mass within one cell: its L or force matters
+    nv.handing[b] = 0;
+    if (!candidates) return;
+    MaskHalo big;
+    load_mask_halo(nv, b, sizeable, big);
     uint64_t handing = 0;
-    NeighbourPattern last_pattern;
+    int column_of = -1;
+    std::array<uint64_t, NeighbourPattern::words> column{};
     const DdmpDistribution* last = nullptr;
     for_each_bit(candidates, [&](int n) {
       const int i = n >> 4, j = (n >> 2) & 3, k = n & 3;
-      bool touches_mass = false;  // a node with mass within one cell: its L or force matters
-      for (int x = -1; x <= 1; ++x)
-        for (int y = -1; y <= 1; ++y) touches_mass |= (positive.z_run(i, j, k, x, y) & 0b01110u) != 0;
-      if (!touches_mass) return;
+      if (n >> 2 != column_of) column = big.columns(i, j), column_of = n >> 2;
       NeighbourPattern pattern;
-      for (int x = -reach; x <= reach; ++x)
-        for (int y = -reach; y <= reach; ++y)
-          pattern.bits |= PatternBits(big.z_run(i, j, k, x, y)) << box_bit(x, y, -reach);
-      pattern.bits &= ~(PatternBits(1) << own_mass_bit);
-      if ((positive.row[i + reach][j + reach] >> (k + reach)) & 1) pattern.bits |= PatternBits(1) << own_mass_bit;
-      // Neighbouring nodes along a face share their pattern: look the last one up once.
-      if (!last || !(pattern == last_pattern)) last = &remembered_distribution(pattern), last_pattern = pattern;
-      if (last->shares.empty()) return;
-      nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)] = last;
-      handing |= uint64_t(1) << n;
+      for (int w = 0; w < NeighbourPattern::words; ++w) pattern.bits[size_t(w)] = (column[size_t(w)] >> k) & 0x1F1F'1F1F'1F1F'1F1Full;
+      pattern.clear(own_mass_bit);
+      if ((positive.row[i + reach][j + reach] >> (k + reach)) & 1) pattern.set(own_mass_bit);
+      // The node's distribution of the last step, else the last node's (neighbours along a
+      // face share their pattern), else the memo's.
+      const DdmpDistribution*& d = nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+      if (!(d && d->pattern == pattern)) d = last && last->pattern == pattern ? last : &remembered_distribution(pattern);
+      last = d;
+      if (!d->shares.empty()) handing |= uint64_t(1) << n;
     });
     nv.handing[b] = handing;
   });
@@ -361,18 +411,20 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
   nv.mass_mask_current = true;
 }
 
-// Hands lanes [first, first + count) of every small-mass node on to its sizeable
+// Hands lanes [First, First + Count) of every small-mass node on to its sizeable
 // neighbours, C_li times each, and zeroes them (mass, momentum and force after P2G; the
 // remapped momentum of MUSL). Each source pushes its shares; a source reaches the blocks
 // next to its own (reach 2 < 4 nodes), so sources in blocks of one colour (coordinates
 // mod 3) write disjoint nodes and run in parallel, and a receiving node gets its parts in
 // a fixed order (colour, then source node, then share): the same sums on any thread count.
-inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
+template <int First, int Count>
+void move_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  // The source's lanes in their places of a node, the others zero; only [first, first + count)
-  // of a receiver change (one masked multiply-add a share, num::MaskedLanes). Sources never
-  // receive (they are not sizeable), so each is read and cleared as it is pushed.
-  const unsigned moved = ((1u << count) - 1) << first;
+  // The source's lanes in their places of a node, the others zero; only its non-zero lanes
+  // of [First, First + Count) change in a receiver (one masked multiply-add a share,
+  // num::MaskedLanes; a zero would add nothing): most sources lie outside the material,
+  // with force but no mass or momentum, and push half a node. Sources never receive (they
+  // are not sizeable), so each is read and cleared as it is pushed.
   Real* nodes = grid.block(0);
   for (const auto& colour : nv.handing_by_colour)
     tbb::parallel_for(size_t(0), colour.size(), [&](size_t ci) {
@@ -383,31 +435,63 @@ inline void move_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, D
         const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
         Real* node = grid.block(b) + n * lane::count;
         Pack source{};
-        for (int c = first; c < first + count; ++c) source[c] = node[c], node[c] = 0;
+        unsigned moved = 0;
+        for (int c = First; c < First + Count; ++c) {
+          source[c] = node[c], node[c] = 0;
+          moved |= unsigned(source[c] != 0) << c;
+        }
         const num::MaskedLanes pushed(source, moved);
-        for_each_share(d, index, n, [&](size_t receiver, Real C) { pushed.add_into(nodes + receiver * lane::count, C); });
+        const auto push = [&](auto halves) __attribute__((always_inline)) {
+          for_each_share(d, index, n, [&](size_t receiver, Real C) {
+            pushed.template add_into<decltype(halves)::value>(nodes + receiver * lane::count, C);
+          });
+        };
+        switch (pushed.halves()) {
+          case num::both_halves: push(std::integral_constant<unsigned, num::both_halves>{}); break;
+          case num::high_lanes: push(std::integral_constant<unsigned, num::high_lanes>{}); break;
+          case num::low_lanes: push(std::integral_constant<unsigned, num::low_lanes>{}); break;
+          default: break;  // nothing to push
+        }
       });
     });
 }
 
-// Lanes [first, first + count) of every small-mass node from its sizeable neighbours,
+// Lanes [First, First + Count) of every small-mass node from its sizeable neighbours,
 // v_l = Σ_i C_li v_i (the new velocity and its change after the grid update; MUSL's
-// remapped velocity).
-inline void spread_ddmp_small_mass_lanes(SparseGrid& grid, int first, int count, DdmpNodalValues& nv) {
+// remapped velocity). A node without mass (most: outside the material) has no point with a
+// weight on it (the points' weights S_ip made its mass), so of these lanes only its velocity
+// — the first three, read by the gradient L through ∇S — reaches the points: the others keep
+// what the grid update left there.
+template <int First, int Count>
+void spread_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
-  // Whole nodes summed (one multiply-add a share, num::NodeSum); lanes [first, first + count)
-  // of the sum kept. The sums read sizeable nodes only, so each is written straight back.
+  constexpr int massless_count = Count < 3 ? Count : 3;
+  constexpr auto halves_of = [](int first, int count) {
+    return (first < 4 ? num::low_lanes : 0u) | (first + count > 4 ? num::high_lanes : 0u);
+  };
+  // Whole nodes (or the halves holding the lanes) summed, one multiply-add a share
+  // (num::NodeSum); the lanes kept. The sums read sizeable nodes only, so each is written
+  // straight back.
   const Real* nodes = grid.block(0);
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (!nv.handing[b]) return;
     BlockNodeIndex index;
     load_block_node_index(nv, b, index);
-    for_each_bit(nv.handing[b], [&](int n) {
+    const auto read_back = [&](int n, auto halves, auto count) __attribute__((always_inline)) {
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
       num::NodeSum sum;
-      for_each_share(d, index, n, [&](size_t receiver, Real C) { sum.add(C, nodes + receiver * lane::count); });
+      for_each_share(d, index, n, [&](size_t receiver, Real C) {
+        sum.template add<decltype(halves)::value>(C, nodes + receiver * lane::count);
+      });
       Real* node = grid.block(b) + n * lane::count;
-      for (int c = first; c < first + count; ++c) node[c] = sum[c];
+      for (int c = First; c < First + decltype(count)::value; ++c) node[c] = sum[c];
+    };
+    for_each_bit(nv.handing[b] & nv.mass_mask[b], [&](int n) {
+      read_back(n, std::integral_constant<unsigned, halves_of(First, Count)>{}, std::integral_constant<int, Count>{});
+    });
+    for_each_bit(nv.handing[b] & ~nv.mass_mask[b], [&](int n) {
+      read_back(n, std::integral_constant<unsigned, halves_of(First, massless_count)>{},
+                std::integral_constant<int, massless_count>{});
     });
   });
 }

@@ -106,9 +106,16 @@ inline Pack& node_pack(Real* node) { return *reinterpret_cast<Pack*>(node); }
 // leaves the others as they are (bit for bit). The source and its mask are laid out once, so
 // each receiver costs one masked 512-bit fused multiply-add (AVX-512) or two 256-bit ones
 // blended by the mask (AVX2).
+//
+// Halves (a template argument of add and add_into; bit 0 lanes 0–3, bit 1 lanes 4–7): the
+// halves of the node that take part. With AVX2 the others cost nothing: NodeSum leaves them
+// out of the sum (its lanes there are then not meaningful), add_into must be given every half
+// with a lane of its mask (MaskedLanes::halves()). The other builds work on whole nodes.
+inline constexpr unsigned both_halves = 3, low_lanes = 1, high_lanes = 2;
 #if defined(__AVX512F__)
 struct NodeSum {
   Pack lanes{};
+  template <unsigned Halves = both_halves>
   void add(Real c, const Real* node) {
     lanes = (Pack)_mm512_fmadd_pd(_mm512_set1_pd(c), (__m512d)node_pack(node), (__m512d)lanes);
   }
@@ -117,6 +124,8 @@ struct NodeSum {
 class MaskedLanes {
  public:
   MaskedLanes(const Pack& source, unsigned lanes) : source_(source), mask_(__mmask8(lanes)) {}
+  unsigned halves() const { return ((mask_ & 15) ? low_lanes : 0) | ((mask_ >> 4) ? high_lanes : 0); }
+  template <unsigned Halves = both_halves>
   void add_into(Real* node, Real c) const {
     Pack& target = node_pack(node);
     target = (Pack)_mm512_mask3_fmadd_pd(_mm512_set1_pd(c), (__m512d)source_, (__m512d)target, mask_);
@@ -129,10 +138,11 @@ class MaskedLanes {
 #elif defined(__AVX2__) && defined(__FMA__)
 struct NodeSum {
   __m256d low = _mm256_setzero_pd(), high = _mm256_setzero_pd();
+  template <unsigned Halves = both_halves>
   void add(Real c, const Real* node) {
     const __m256d copies = _mm256_set1_pd(c);
-    low = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node), low);
-    high = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node + 4), high);
+    if constexpr ((Halves & low_lanes) != 0) low = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node), low);
+    if constexpr ((Halves & high_lanes) != 0) high = _mm256_fmadd_pd(copies, _mm256_loadu_pd(node + 4), high);
   }
   Real operator[](int q) const { return q < 4 ? ((Axes)low)[q] : ((Axes)high)[q - 4]; }
 };
@@ -140,10 +150,14 @@ class MaskedLanes {
  public:
   MaskedLanes(const Pack& source, unsigned lanes)
       : source_{(__m256d)low_half(source), (__m256d)high_half(source)},
-        mask_{half_mask(lanes & 15), half_mask((lanes >> 4) & 15)} {}
+        mask_{half_mask(lanes & 15), half_mask((lanes >> 4) & 15)},
+        halves_(((lanes & 15) ? low_lanes : 0) | ((lanes >> 4) ? high_lanes : 0)) {}
+  unsigned halves() const { return halves_; }
+  template <unsigned Halves = both_halves>
   void add_into(Real* node, Real c) const {
     const __m256d copies = _mm256_set1_pd(c);
     for (int h = 0; h < 2; ++h) {
+      if (((Halves >> h) & 1) == 0) continue;
       const __m256d target = _mm256_loadu_pd(node + 4 * h);
       _mm256_storeu_pd(node + 4 * h, _mm256_blendv_pd(target, _mm256_fmadd_pd(copies, source_[h], target), mask_[h]));
     }
@@ -155,10 +169,12 @@ class MaskedLanes {
     return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(_mm256_set1_epi64x(bits), each), each));
   }
   __m256d source_[2], mask_[2];
+  unsigned halves_;
 };
 #else
 struct NodeSum {
   Pack lanes{};
+  template <unsigned Halves = both_halves>
   void add(Real c, const Real* node) {
     for (int q = 0; q < pack_width; ++q) lanes[q] = std::fma(c, node[q], lanes[q]);
   }
@@ -167,6 +183,8 @@ struct NodeSum {
 class MaskedLanes {
  public:
   MaskedLanes(const Pack& source, unsigned lanes) : source_(source), lanes_(lanes) {}
+  unsigned halves() const { return ((lanes_ & 15) ? low_lanes : 0) | ((lanes_ >> 4) ? high_lanes : 0); }
+  template <unsigned Halves = both_halves>
   void add_into(Real* node, Real c) const {
     for (int q = 0; q < pack_width; ++q)
       if ((lanes_ >> q) & 1) node[q] = std::fma(c, source_[q], node[q]);

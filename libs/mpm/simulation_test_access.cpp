@@ -26,9 +26,9 @@ void SimulationTestAccess::grid_update(Simulation& sim, Real dt) {
     with_solver_shape(c.settings, [&](auto shape) {
       using Shape = decltype(shape);
       add_contact_forces<Shape>(s, c);
-      ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
+      ddmp_hand_on<Shape, lane::mass, 7>(s, c, true);
       update_nodes(s, c, dt);
-      ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+      ddmp_read_back<Shape, lane::momentum, 6>(s, c);
     });
   });
   s.grid_holds_velocity = true;

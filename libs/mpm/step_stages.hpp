@@ -352,18 +352,17 @@ void gather(SolverState& s, StepContext& c, Real dt) {
 
 // After a scatter: small-mass nodes hand lanes [first, first + count) on to their
 // neighbours (`find`: decide which nodes those are, from the mass just mapped).
-template <class Shape>
-void ddmp_hand_on(SolverState& s, StepContext& c, int first, int count, bool find) {
+template <class Shape, int First, int Count>
+void ddmp_hand_on(SolverState& s, StepContext& c, bool find) {
   if constexpr (Shape::smoothed_gradient) {
     if (find) find_ddmp_small_mass_nodes(s.grid, ddmp_small_mass(s, c), c.ddmp_nodal);
-    move_ddmp_small_mass_lanes(s.grid, first, count, c.ddmp_nodal);
+    move_ddmp_small_mass_lanes<First, Count>(s.grid, c.ddmp_nodal);
   }
 }
 // After the nodal velocities: the small-mass nodes' lanes read back from their neighbours.
-template <class Shape>
-void ddmp_read_back(SolverState& s, StepContext& c, int first, int count) {
-  if constexpr (Shape::smoothed_gradient)
-    spread_ddmp_small_mass_lanes(s.grid, first, count, c.ddmp_nodal);
+template <class Shape, int First, int Count>
+void ddmp_read_back(SolverState& s, StepContext& c) {
+  if constexpr (Shape::smoothed_gradient) spread_ddmp_small_mass_lanes<First, Count>(s.grid, c.ddmp_nodal);
 }
 
 // --- The contact stage (rigid_contact.hpp) ----------------------------------------------
@@ -467,9 +466,9 @@ void scatter_all_and_update_nodes(SolverState& s, StepContext& c, Real dt) {
   prepare_grid<Shape>(s, c);
   scatter<Shape, ScatterAll>(s, c);
   add_contact_forces<Shape>(s, c);
-  ddmp_hand_on<Shape>(s, c, lane::mass, 7, true);
+  ddmp_hand_on<Shape, lane::mass, 7>(s, c, true);
   update_nodes(s, c, dt);
-  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  ddmp_read_back<Shape, lane::momentum, 6>(s, c);
 }
 
 template <class Shape>
@@ -485,9 +484,9 @@ void step_musl(SolverState& s, StepContext& c, Real dt) {
   // Map the updated particle momentum back (lanes 4–6) and take L from that velocity.
   clear_grid_lanes(s.grid, lane::force, 3);
   scatter<Shape, ScatterRemap>(s, c);
-  ddmp_hand_on<Shape>(s, c, lane::force, 3, false);
+  ddmp_hand_on<Shape, lane::force, 3>(s, c, false);
   grid_velocity_from_momentum(s.grid, lane::force, lane::force, c.body_info);
-  ddmp_read_back<Shape>(s, c, lane::force, 3);
+  ddmp_read_back<Shape, lane::force, 3>(s, c);
   impose_boundaries(s, c, lane::force);
   gather<Shape, GatherStrainAndPosition>(s, c, dt);
 }
@@ -496,18 +495,18 @@ template <class Shape>
 void step_usf(SolverState& s, StepContext& c, Real dt) {
   prepare_grid<Shape>(s, c);
   scatter<Shape, ScatterMomentum>(s, c);
-  ddmp_hand_on<Shape>(s, c, lane::mass, 4, true);
+  ddmp_hand_on<Shape, lane::mass, 4>(s, c, true);
   // Stress first, from the velocity at the start of the step (lanes 4–6).
   grid_velocity_from_momentum(s.grid, lane::momentum, lane::force, c.body_info);
-  ddmp_read_back<Shape>(s, c, lane::force, 3);
+  ddmp_read_back<Shape, lane::force, 3>(s, c);
   impose_boundaries(s, c, lane::force);
   gather<Shape, GatherStrain>(s, c, dt);
   clear_grid_lanes(s.grid, lane::force, 3);
   scatter<Shape, ScatterForce>(s, c);
   add_contact_forces<Shape>(s, c);
-  ddmp_hand_on<Shape>(s, c, lane::force, 3, false);
+  ddmp_hand_on<Shape, lane::force, 3>(s, c, false);
   update_nodes(s, c, dt);
-  ddmp_read_back<Shape>(s, c, lane::momentum, 6);
+  ddmp_read_back<Shape, lane::momentum, 6>(s, c);
   gather<Shape, GatherMotion>(s, c, dt);
 }
 
