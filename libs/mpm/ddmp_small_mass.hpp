@@ -80,7 +80,6 @@ struct NeighbourPattern {
   bool operator==(const NeighbourPattern& o) const { return bits == o.bits; }
   bool has(int bit) const { return (bits[size_t(bit >> 6)] >> (bit & 63)) & 1; }
   void set(int bit) { bits[size_t(bit >> 6)] |= uint64_t(1) << (bit & 63); }
-  void clear(int bit) { bits[size_t(bit >> 6)] &= ~(uint64_t(1) << (bit & 63)); }
   bool sizeable(const Offset& d) const { return has(box_bit(d.x, d.y, d.z)); }
 };
 struct NeighbourPatternHash {
@@ -392,7 +391,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
       if (n >> 2 != column_of) column = big.columns(i, j), column_of = n >> 2;
       NeighbourPattern pattern;
       for (int w = 0; w < NeighbourPattern::words; ++w) pattern.bits[size_t(w)] = (column[size_t(w)] >> k) & 0x1F1F'1F1F'1F1F'1F1Full;
-      pattern.clear(own_mass_bit);
+      // The node's own bit in `big` is clear (a candidate is not sizeable): it marks own mass.
       if ((positive.row[i + reach][j + reach] >> (k + reach)) & 1) pattern.set(own_mass_bit);
       // The node's distribution of the last step, else the last node's (neighbours along a
       // face share their pattern), else the memo's.
