@@ -106,13 +106,21 @@ void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, 
     constexpr int first[3] = {bw - Reach, 0, 0}, count[3] = {Reach, bw, Reach}, start[3] = {0, Reach, Reach + bw};
     constexpr int I = decltype(si)::value, J = decltype(sj)::value, K = decltype(sk)::value;
     const int nb = nv.neighbours[block][size_t(neighbour_index(I - 1, J - 1, K - 1))];
-    const Real* in = nb < 0 ? nullptr : first_value(size_t(nb));
+    // The test once per box, not per value (the loops then have no branch).
+    if (nb < 0) {
+      for (int c = 0; c < Components; ++c)
+        for (int i = 0; i < count[I]; ++i)
+          for (int j = 0; j < count[J]; ++j)
+            for (int k = 0; k < count[K]; ++k) halo.v[c][start[I] + i][start[J] + j][start[K] + k] = 0;
+      return;
+    }
+    const Real* in = first_value(size_t(nb));
     for (int c = 0; c < Components; ++c)
       for (int i = 0; i < count[I]; ++i)
         for (int j = 0; j < count[J]; ++j)
           for (int k = 0; k < count[K]; ++k)
             halo.v[c][start[I] + i][start[J] + j][start[K] + k] =
-                in ? in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c] : Real(0);
+                in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c];
   };
   for_each_halo_box(box, std::make_integer_sequence<int, 27>{});
 }
@@ -249,17 +257,14 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
 // into the nodal values (row-major): L_rc = D'_c-separable passes of v_r, as the force.
 // Only a node with mass is a corner j of a point's cell with S_j > 0, so a block none of
 // whose nodes had mass this step (the layer of blocks DDMP adds around the points, for the
-// smoothed force) gets L = 0 without the passes: the points read its nodes, if at all, with
-// weight 0.
+// smoothed force) is left out: its L is 0, which copy_ddmp_box_from_grid supplies (the points
+// read its nodes, if at all, with weight 0), so it is neither computed nor written.
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const Real inv_h = 1 / h;
   const bool skip_massless = nv.mass_mask_current;  // find_ddmp_small_mass_nodes sized it to this step's blocks
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    if (skip_massless && nv.mass_mask[b] == 0) {
-      std::fill_n(nv.node(b, 0), SparseGrid::nodes_per_block * DdmpNodalValues::count, Real(0));
-      return;
-    }
+    if (skip_massless && nv.mass_mask[b] == 0) return;  // L = 0 there: copy_ddmp_box_from_grid
     NodeHalo<3> v;
     load_halo<1, 3, lane::count>(nv, b, [&](size_t nb) { return grid.block(nb) + velocity_lane; }, v);
     constexpr int w = bw + 2;
@@ -324,33 +329,53 @@ inline void add_ddmp_box_to_grid(const Bucket& b, const BlockTable& table, Bucke
 }
 
 // The point's part of the nodal stress: −(1 − α) S_j V σ onto its cell's corners j
-// (minus_volume = −V, σ in Voigt order).
+// (minus_volume = −V, σ in Voigt order). Per corner one 4-lane and one 2-lane multiply-add,
+// each lane the scalar loop's fused c·σ_k + node_k (the same bits); the corners unrolled,
+// so their offsets are constants.
 inline void scatter_ddmp_corner_stress(const DdmpCornerStencil& st, Real minus_volume, const SymTensor& s,
                                        BucketBuffer& buffer) {
   Real* cell = buffer.ddmp_cell(st.base);
+  const Axes s_low = {s[0], s[1], s[2], s[3]};
+  const Duo s_high = {s[4], s[5]};
+#pragma GCC unroll 8
   for (int l = 0; l < 8; ++l) {
     const Real c = st.corner[l] * minus_volume;
     if (c == 0) continue;
     Real* node = cell + BucketBuffer::ddmp_corner_offset(l);
-    for (int k = 0; k < 6; ++k) node[k] += c * s[k];
+    num::store(node, num::load<Axes>(node) + c * s_low);
+    num::store(node + 4, num::load<Duo>(node + 4) + c * s_high);
   }
 }
 
 // The point's smoothed part of L̄: (1 − α) Σ_j S_j L_j over its cell's corners, row-major.
+// Components 0–3 and 4–7 as 4-lane vectors and 8 alone, summed corner by corner in the
+// scalar loop's order.
 inline void ddmp_corner_velocity_gradient(const DdmpCornerStencil& st, const BucketBuffer& buffer, Real L[9]) {
-  for (int k = 0; k < 9; ++k) L[k] = 0;
   const Real* cell = buffer.ddmp_cell(st.base);
+  Axes low{}, high{};
+  Real last = 0;
+#pragma GCC unroll 8
   for (int l = 0; l < 8; ++l) {
     const Real* node = cell + BucketBuffer::ddmp_corner_offset(l);
-    for (int k = 0; k < 9; ++k) L[k] += st.corner[l] * node[k];
+    const Real c = st.corner[l];
+    low += c * num::load<Axes>(node);
+    high += c * num::load<Axes>(node + 4);
+    last += c * node[8];
   }
+  num::store(L, low);
+  num::store(L + 4, high);
+  L[8] = last;
 }
 
-// Copies the nodal L_j of the box into the buffer.
+// Copies the nodal L_j of the box into the buffer: zero in inactive blocks and, when the
+// mass mask is this step's, in blocks without mass, whose L the L pass does not write (no
+// point has a corner there).
 inline void copy_ddmp_box_from_grid(const Bucket& b, const BlockTable& table, const DdmpNodalValues& nv,
                                     BucketBuffer& buffer) {
+  const bool skip_massless = nv.mass_mask_current;
   for_each_box_node(b, table, buffer, [&](Real* l, int block, int n) {
-    const Real* g = block < 0 ? nullptr : nv.node(size_t(block), n);
+    const bool written = block >= 0 && !(skip_massless && nv.mass_mask[size_t(block)] == 0);
+    const Real* g = written ? nv.node(size_t(block), n) : nullptr;
     for (int c = 0; c < DdmpNodalValues::count; ++c) l[c] = g ? g[c] : Real(0);
   });
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include "mpm/real.hpp"
@@ -20,6 +21,7 @@ namespace latmpm::mpm {
 typedef Real Axes __attribute__((vector_size(4 * sizeof(Real))));
 typedef int32_t AxesInt __attribute__((vector_size(4 * sizeof(int32_t))));
 typedef Real Pack __attribute__((vector_size(8 * sizeof(Real))));
+typedef Real Duo __attribute__((vector_size(2 * sizeof(Real))));  // two neighbouring values
 inline constexpr int pack_width = 8;
 
 namespace num {
@@ -80,6 +82,15 @@ inline Axes high_half(const Pack& p) { return __builtin_shufflevector(p, p, 4, 5
 inline Pack join_halves(const Axes& low, const Axes& high) {
   return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
 }
+// A vector of consecutive values at any address (unaligned load and store).
+template <class V>
+inline V load(const Real* at) {
+  V v;
+  std::memcpy(&v, at, sizeof v);
+  return v;
+}
+template <class V>
+inline void store(Real* at, const V& v) { std::memcpy(at, &v, sizeof v); }
 // Whether a Pack is two native four-lane halves (AVX without AVX-512): there GCC 12 builds any
 // eight-lane value it cannot keep in registers (a splat of a scalar, a sum carried through a
 // call) on the stack, read back in 16-byte pieces with a store-forwarding stall each, so the

@@ -511,38 +511,46 @@ void gather_bucket(const Bucket& b, const BodyRun* runs, Particles& ps, const Bo
                   if (plain_gradient) return interpolate<gradient>(ddmp_plain_gradient_stencil(st, inv_h), buffer);
                 return interpolate<gradient>(st, buffer);
               }();
-              [[maybe_unused]] Real plain_l[3][3];
+              // The point's L in scalars, written to its lane of the packs once at the end (a
+              // lane of a pack read and written back per term cost more than the terms).
+              [[maybe_unused]] Real l[3][3];
               for (int a = 0; a < 3; ++a) {
                 v_grid[a][q] = aw[lane::momentum + a];
                 dv[a][q] = aw[lane::force + a];
                 if constexpr (gradient) {  // L_ab = Σ v_a ∂_b S
-                  grad_v[a][0][q] = ax[Mode::gradient_lane + a];
-                  grad_v[a][1][q] = ay[Mode::gradient_lane + a];
-                  grad_v[a][2][q] = az[Mode::gradient_lane + a];
+                  l[a][0] = ax[Mode::gradient_lane + a];
+                  l[a][1] = ay[Mode::gradient_lane + a];
+                  l[a][2] = az[Mode::gradient_lane + a];
                 }
               }
               if constexpr (gradient && Shape::smoothed_on_grid) {
-                if constexpr (grid_ddmp)
-                  if (plain_gradient)
-                    for (int r = 0; r < 3; ++r)
-                      for (int c = 0; c < 3; ++c) {
-                        plain_l[r][c] = grad_v[r][c][q];
-                        grad_v[r][c][q] *= st.alpha;  // the α part, α Σ v ⊗ ∇S_i
-                      }
                 // DDMP on the grid: + (1 − α) Σ_j S̃_j L_j, the nodal L of ddmp_grid.hpp.
-                Real L[9];
-                ddmp_corner_velocity_gradient(st, buffer, L);
-                for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) grad_v[r][c][q] += L[r * 3 + c];
-                if constexpr (grid_ddmp)
-                  if (plain_gradient) {  // σ_s from the plain gradient against L̄ (ddmp_stabilization.hpp)
-                    Real smoothed_l[3][3];
-                    for (int r = 0; r < 3; ++r)
-                      for (int c = 0; c < 3; ++c) smoothed_l[r][c] = grad_v[r][c][q];
-                    update_ddmp_stabilization_stress(body.ddmp_stabilization, plain_l, smoothed_l, dt,
-                                                     ps.ddmp_stabilization_stress[g0 + uint32_t(q)]);
-                  }
+                Real smoothed[9];
+                ddmp_corner_velocity_gradient(st, buffer, smoothed);
+                const auto add_smoothed = [&] {
+                  for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) l[r][c] += smoothed[r * 3 + c];
+                };
+                if constexpr (!grid_ddmp) {
+                  add_smoothed();
+                } else if (!plain_gradient) {
+                  add_smoothed();
+                } else {
+                  // The α part α Σ v ⊗ ∇S_i of the plain gradient, then σ_s from the plain
+                  // gradient against L̄ (ddmp_stabilization.hpp).
+                  Real plain_l[3][3];
+                  for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) {
+                      plain_l[r][c] = l[r][c];
+                      l[r][c] = st.alpha * l[r][c] + smoothed[r * 3 + c];
+                    }
+                  update_ddmp_stabilization_stress(body.ddmp_stabilization, plain_l, l, dt,
+                                                   ps.ddmp_stabilization_stress[g0 + uint32_t(q)]);
+                }
               }
+              if constexpr (gradient)
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) grad_v[r][c][q] = l[r][c];
             }
             // 2. Update the group's particles together, one per lane.
             if constexpr (Mode::velocity) {
