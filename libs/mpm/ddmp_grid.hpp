@@ -47,7 +47,10 @@ struct DdmpNodalValues {
   // mass_mask is this step's: find_ddmp_small_mass_nodes ran after the step's grid was
   // prepared (the mass mapped by its scatter, before any node handed its mass on).
   bool mass_mask_current = false;
-  std::array<std::vector<uint32_t>, 27> handing_by_colour;  // blocks with nodes handing on, by coordinates mod 3
+  // The blocks with nodes handing on, for the hand-on's order (move_ddmp_small_mass_lanes):
+  // per tile colour (parity of the 3×3×3-block tile's coordinates) its tiles, each a run of
+  // `handing_blocks` from handing_tile_begin[t] to [t + 1], in block-colour order (mod 3).
+  std::array<std::vector<uint32_t>, 8> handing_blocks, handing_tile_begin;
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
   std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
 
@@ -182,7 +185,8 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   nv.values.resize(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count);
   nv.distributions.resize(blocks * SparseGrid::nodes_per_block);
   nv.handing.assign(blocks, 0);
-  for (auto& list : nv.handing_by_colour) list.clear();
+  for (auto& list : nv.handing_blocks) list.clear();
+  for (auto& list : nv.handing_tile_begin) list.clear();
   nv.neighbours.resize(blocks);
   nv.mass_mask_current = false;
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
