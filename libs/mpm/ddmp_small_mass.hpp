@@ -421,7 +421,8 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
     int place;
     uint32_t block;
   };
-  std::array<std::vector<Entry>, 8> by_colour;
+  thread_local std::array<std::vector<Entry>, 8> by_colour;  // kept: no allocation a step
+  for (auto& list : by_colour) list.clear();
   for (size_t b = 0; b < blocks; ++b)
     if (nv.handing[b]) {
       const BlockTile t = block_tile(grid.coord(b));
