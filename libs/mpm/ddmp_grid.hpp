@@ -54,6 +54,10 @@ struct DdmpNodalValues {
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
   std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
 
+  // Whether the L pass left block b out (no node with mass this step: ddmp_nodal_velocity_gradient);
+  // its L is then 0, which copy_ddmp_box_from_grid supplies.
+  bool gradient_left_out(size_t b) const { return mass_mask_current && mass_mask[b] == 0; }
+
   Real* node(size_t block, int n) { return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count; }
   const Real* node(size_t block, int n) const {
     return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count;
@@ -266,9 +270,8 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
 inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_lane, Real h, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const Real inv_h = 1 / h;
-  const bool skip_massless = nv.mass_mask_current;  // find_ddmp_small_mass_nodes sized it to this step's blocks
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    if (skip_massless && nv.mass_mask[b] == 0) return;  // L = 0 there: copy_ddmp_box_from_grid
+    if (nv.gradient_left_out(b)) return;
     NodeHalo<3> v;
     load_halo<1, 3, lane::count>(nv, b, [&](size_t nb) { return grid.block(nb) + velocity_lane; }, v);
     constexpr int w = bw + 2;
@@ -376,10 +379,8 @@ inline void ddmp_corner_velocity_gradient(const DdmpCornerStencil& st, const Buc
 // point has a corner there).
 inline void copy_ddmp_box_from_grid(const Bucket& b, const BlockTable& table, const DdmpNodalValues& nv,
                                     BucketBuffer& buffer) {
-  const bool skip_massless = nv.mass_mask_current;
   for_each_box_node(b, table, buffer, [&](Real* l, int block, int n) {
-    const bool written = block >= 0 && !(skip_massless && nv.mass_mask[size_t(block)] == 0);
-    const Real* g = written ? nv.node(size_t(block), n) : nullptr;
+    const Real* g = block < 0 || nv.gradient_left_out(size_t(block)) ? nullptr : nv.node(size_t(block), n);
     for (int c = 0; c < DdmpNodalValues::count; ++c) l[c] = g ? g[c] : Real(0);
   });
 }

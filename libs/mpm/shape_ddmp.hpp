@@ -120,9 +120,8 @@ inline void ddmp_partition_of_points(const Vec3* x, size_t n, Real inv_h, const 
   }
   // The log and exp as array expressions of their own, which Eigen vectorises (inside
   // select() it evaluated them coefficient by coefficient through libm: 4 % of a DDMP step).
-  const Array q = out;
-  const Array smooth = partition.peak * (partition.exponent * q.log()).exp();
-  for (size_t p = 0; p < n; ++p) out[Eigen::Index(p)] = q[Eigen::Index(p)] > 0 ? smooth[Eigen::Index(p)] : Real(0);
+  const Array smooth = partition.peak * (partition.exponent * out.log()).exp();
+  out = (out > 0).select(smooth, Real(0));
 }
 
 // The particle's cell, its linear weights and α: what both evaluations of Eq. 7 share.
