@@ -27,6 +27,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
@@ -77,7 +79,9 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
 struct NeighbourPattern {
   static constexpr int words = 4;
   std::array<uint64_t, words> bits{};
-  bool operator==(const NeighbourPattern& o) const { return bits == o.bits; }
+  bool operator==(const NeighbourPattern& o) const {  // four words, not a call of memcmp (1 % of a step)
+    return ((bits[0] ^ o.bits[0]) | (bits[1] ^ o.bits[1]) | (bits[2] ^ o.bits[2]) | (bits[3] ^ o.bits[3])) == 0;
+  }
   bool has(int bit) const { return (bits[size_t(bit >> 6)] >> (bit & 63)) & 1; }
   void set(int bit) { bits[size_t(bit >> 6)] |= uint64_t(1) << (bit & 63); }
   bool sizeable(const Offset& d) const { return has(box_bit(d.x, d.y, d.z)); }
@@ -99,14 +103,16 @@ struct NeighbourPatternHash {
 using Fit = std::array<Real, 4>;
 }  // namespace ddmp_grid_detail
 
-// A pattern's shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the
-// hand-on and the read-back visit these, not all 124 offsets (for_each_share). Per share its
-// coefficient and its receiver's step in a block's BlockNodeIndex from the handing node, in
-// the neighbour_offsets order, 10 bytes a share: a paper-size lattice has ≈ 54,000 patterns.
-struct DdmpDistribution {
+// A pattern and its fit (c₀, c): the shares C_li = w(d)(c₀ + c · d) of its sizeable
+// neighbours d, computed as the hand-on and the read-back visit them (for_each_share), not
+// stored: a paper-size lattice has ≈ 54,000 patterns, and their stored shares (≈ 50 of 10
+// bytes each) were read from a memo of tens of MB at every share — 40 % of the hand-on's
+// and the read-back's time went to those misses (perf, T2P20-E8, 2026-11-28). One cache
+// line a distribution.
+struct alignas(64) DdmpDistribution {
   ddmp_grid_detail::NeighbourPattern pattern;  // the neighbourhood it belongs to
-  std::vector<Real> shares;                    // none: the node does not hand on
-  std::vector<int16_t> steps;
+  ddmp_grid_detail::Fit fit{};                 // c₀ = 0: the node does not hand on
+  bool hands_on() const { return fit[0] != 0; }
 };
 
 namespace ddmp_grid_detail {
@@ -144,22 +150,44 @@ inline void load_block_node_index(const DdmpNodalValues& nv, size_t b, BlockNode
 constexpr int16_t box_index_step(int x, int y, int z) {
   return int16_t((x * BlockNodeIndex::width + y) * BlockNodeIndex::width + z);
 }
+// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
+inline Real distribution_coefficient(const Real* c, Real x, Real y, Real z, Real w) {
+  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
+}
+// Per bit of a NeighbourPattern (box_bit(d)): the offset d, its weight and its step in
+// BlockNodeIndex (bits outside the 5×5×5 box, and d = 0's own-mass bit, are never visited).
+struct ShareOffset {
+  Real x, y, z, weight;
+  int32_t step;
+};
+inline const std::array<ShareOffset, NeighbourPattern::words * 64>& share_offsets() {
+  static const auto table = [] {
+    std::array<ShareOffset, NeighbourPattern::words * 64> out{};
+    for (const Offset& d : neighbour_offsets())
+      out[size_t(box_bit(d.x, d.y, d.z))] = {Real(d.x), Real(d.y), Real(d.z), d.weight, box_index_step(d.x, d.y, d.z)};
+    return out;
+  }();
+  return table;
+}
 // Calls fn(receiver, C_li) for the shares of the distribution of node n of the block whose
-// BlockNodeIndex is `index`, in order; receiver is the node's index in the grid.
+// BlockNodeIndex is `index`, in the neighbour_offsets order (the pattern's bits in order);
+// receiver is the node's index in the grid.
 // Inlined, so that a sum fn keeps over the shares stays in registers: called out of line,
 // the read-back's eight-lane sum went through the stack at every share on AVX2 (a
 // store-forwarding stall each; docs/benchmarks.md, "Eight-lane splats on AVX2").
 template <class Fn>
 [[gnu::always_inline]] inline void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
   const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
-  const Real* C = d.shares.data();
-  const int16_t* step = d.steps.data();
-  for (size_t s = 0, count = d.shares.size(); s < count; ++s) fn(size_t(own[step[s]]), C[s]);
-}
-
-// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
-inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
-  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
+  const ShareOffset* offsets = share_offsets().data();
+  const Real c[4] = {d.fit[0], d.fit[1], d.fit[2], d.fit[3]};
+  for (int w = 0; w < NeighbourPattern::words; ++w) {
+    uint64_t bits = d.pattern.bits[size_t(w)];
+    if (w == own_mass_bit >> 6) bits &= ~(uint64_t(1) << (own_mass_bit & 63));  // d = 0 is no share
+    for (; bits; bits &= bits - 1) {
+      const ShareOffset& o = offsets[w * 64 + __builtin_ctzll(bits)];
+      fn(size_t(own[o.step]), distribution_coefficient(c, o.x, o.y, o.z, o.weight));
+    }
+  }
 }
 
 // (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours (zero:
@@ -190,11 +218,14 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
 }
 
 // The distributions remembered: a surface has few patterns (a flat face, its edges and
-// corners, a particle entering a cell), so the 4×4 solve and the shares are computed once
-// per pattern, not once per node and step. Insert-only during a step and shared by the
-// threads (entries never move); a pure function of the pattern, so results do not depend
-// on which thread computed it, nor on when the memo was last emptied.
-using DistributionMemo = tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash>;
+// corners, a particle entering a cell), so the 4×4 solve is done once per pattern, not once
+// per node and step. Insert-only during a step and shared by the threads (entries never
+// move); a pure function of the pattern, so results do not depend on which thread computed
+// it, nor on when the memo was last emptied. std::allocator, which honours the entries'
+// 64-byte alignment (tbb_allocator, the map's default, does not promise it).
+using DistributionMemo =
+    tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash, std::equal_to<NeighbourPattern>,
+                                  std::allocator<std::pair<const NeighbourPattern, DdmpDistribution>>>;
 inline DistributionMemo& distribution_memo() {
   static DistributionMemo memo;
   return memo;
@@ -203,8 +234,8 @@ inline DistributionMemo& distribution_memo() {
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
 // (find_ddmp_small_mass_nodes, before any pointer into it is taken). A step's own patterns
 // must fit, or every step refits them all: the paper-size T2P30 lattice starts with ≈ 54,000
-// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.5 kB a pattern
-// (≈ 50 shares of 8 B, the map's node) the limit is ≈ 70 MB, 1.1 kB at most (124 shares).
+// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.2 kB a pattern
+// (the map's node: its key, its 64-byte distribution, links) the limit is ≈ 25 MB.
 // One memo for the process: Simulations step one at a time.
 inline constexpr size_t distribution_memo_limit = size_t(1) << 17;
 
@@ -224,14 +255,8 @@ inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern
   if (it != memo.end()) return it->second;
   DdmpDistribution d;
   d.pattern = pattern;
-  const Fit fit = fit_distribution(pattern);
-  if (fit[0] != 0)
-    for (const Offset& off : neighbour_offsets())
-      if (pattern.sizeable(off)) {
-        d.shares.push_back(distribution_coefficient(fit.data(), off.x, off.y, off.z, off.weight));
-        d.steps.push_back(box_index_step(off.x, off.y, off.z));
-      }
-  return memo.insert({pattern, std::move(d)}).first->second;
+  d.fit = fit_distribution(pattern);
+  return memo.insert({pattern, d}).first->second;
 }
 
 // The memo's look-up behind a small direct-mapped cache per thread: the concurrent map's
@@ -318,6 +343,16 @@ void for_each_bit(uint64_t mask, Fn&& fn) {
     mask &= mask - 1;
   }
 }
+// Asks for the distributions of a block's nodes in `mask` to be brought into the cache, all
+// at once, before they are used one by one: they lie scattered in the memo, and waiting
+// for each in turn was a fifth of the read-back's time at paper size (perf, T2P20-E8,
+// 2026-11-28).
+inline void prefetch_distributions(const DdmpNodalValues& nv, size_t b, uint64_t mask) {
+  const DdmpDistribution* const* distribution = nv.distributions.data() + b * SparseGrid::nodes_per_block;
+  for_each_bit(mask, [&](int n) {
+    if (distribution[n]) __builtin_prefetch(distribution[n]);
+  });
+}
 // Blocks in tiles of 3×3×3: a block's tile, its colour among the tiles (the parity of the
 // tile's coordinates: tiles of one colour are two tiles, 24 nodes, apart along some axis),
 // and the block's place in its tile (its coordinates mod 3: the 27 blocks around any block
@@ -392,6 +427,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
     candidates &= positive.near();  // a node with mass within one cell: its L or force matters
     nv.handing[b] = 0;
     if (!candidates) return;
+    prefetch_distributions(nv, b, candidates);  // the last step's, compared below
     MaskHalo big;
     load_mask_halo(nv, b, sizeable, big);
     uint64_t handing = 0;
@@ -410,7 +446,7 @@ inline void find_ddmp_small_mass_nodes(const SparseGrid& grid, Real small_mass, 
       const DdmpDistribution*& d = nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
       if (!(d && d->pattern == pattern)) d = last && last->pattern == pattern ? last : &remembered_distribution(pattern);
       last = d;
-      if (!d->shares.empty()) handing |= uint64_t(1) << n;
+      if (d->hands_on()) handing |= uint64_t(1) << n;
     });
     nv.handing[b] = handing;
   });
@@ -466,6 +502,7 @@ void move_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
   const auto hand_on_block = [&](size_t b) {
     BlockNodeIndex index;
     load_block_node_index(nv, b, index);
+    prefetch_distributions(nv, b, nv.handing[b]);
     for_each_bit(nv.handing[b], [&](int n) {
       const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
       Real* node = grid.block(b) + n * lane::count;
@@ -529,6 +566,7 @@ void spread_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
       Real* node = grid.block(b) + n * lane::count;
       for (int c = First; c < First + decltype(count)::value; ++c) node[c] = sum[c];
     };
+    prefetch_distributions(nv, b, nv.handing[b]);
     for_each_bit(nv.handing[b] & nv.mass_mask[b], [&](int n) {
       read_back(n, std::integral_constant<unsigned, halves_of(First, Count)>{}, std::integral_constant<int, Count>{});
     });
