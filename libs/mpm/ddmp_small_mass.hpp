@@ -106,9 +106,9 @@ using Fit = std::array<Real, 4>;
 // A pattern and its fit (c₀, c): the shares C_li = w(d)(c₀ + c · d) of its sizeable
 // neighbours d, computed as the hand-on and the read-back visit them (for_each_share), not
 // stored: a paper-size lattice has ≈ 54,000 patterns, and their stored shares (≈ 50 of 10
-// bytes each) were read from a memo of tens of MB at every share — 40 % of the hand-on's
-// and the read-back's time went to those misses (perf, T2P20-E8, 2026-11-28). One cache
-// line a distribution.
+// bytes each) were read from a memo of tens of MB at every node — two fifths of the
+// hand-on's and the read-back's samples sat on those loads (perf, T2P20-E8, 2026-11-28).
+// One cache line a distribution.
 struct alignas(64) DdmpDistribution {
   ddmp_grid_detail::NeighbourPattern pattern;  // the neighbourhood it belongs to
   ddmp_grid_detail::Fit fit{};                 // c₀ = 0: the node does not hand on
