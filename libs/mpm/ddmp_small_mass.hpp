@@ -24,11 +24,13 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <functional>
 #include <memory>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include "mpm/ddmp_grid.hpp"
@@ -103,16 +105,21 @@ struct NeighbourPatternHash {
 using Fit = std::array<Real, 4>;
 }  // namespace ddmp_grid_detail
 
-// A pattern and its fit (c₀, c): the shares C_li = w(d)(c₀ + c · d) of its sizeable
-// neighbours d, computed as the hand-on and the read-back visit them (for_each_share), not
-// stored: a paper-size lattice has ≈ 54,000 patterns, and their stored shares (≈ 50 of 10
-// bytes each) were read from a memo of tens of MB at every node — two fifths of the
-// hand-on's and the read-back's samples sat on those loads (perf, T2P20-E8, 2026-11-28).
-// One cache line a distribution.
-struct alignas(64) DdmpDistribution {
+// A pattern's shares C_li = w(d)(c₀ + c · d) for the sizeable neighbours: the hand-on and
+// the read-back visit these, not all 124 offsets (for_each_share). Per share its coefficient
+// and its receiver's step in a block's BlockNodeIndex from the handing node, in the
+// neighbour_offsets order, 10 bytes a share, in one allocation with this header
+// (DistributionStorage): a paper-size lattice has ≈ 54,000 patterns, and with the shares in
+// two vectors of their own every handing node began with three scattered misses — two
+// fifths of the hand-on's and the read-back's samples sat on those loads (perf, T2P20-E8,
+// 2026-11-28). Computing the shares from the fit instead cost 11 % more instructions on a
+// QUICK lattice.
+struct DdmpDistribution {
   ddmp_grid_detail::NeighbourPattern pattern;  // the neighbourhood it belongs to
-  ddmp_grid_detail::Fit fit{};                 // c₀ = 0: the node does not hand on
-  bool hands_on() const { return fit[0] != 0; }
+  const Real* shares = nullptr;                // `count` coefficients, right after this header
+  const int16_t* steps = nullptr;              // `count` steps, after the coefficients
+  uint32_t count = 0;                          // none: the node does not hand on
+  bool hands_on() const { return count != 0; }
 };
 
 namespace ddmp_grid_detail {
@@ -150,44 +157,22 @@ inline void load_block_node_index(const DdmpNodalValues& nv, size_t b, BlockNode
 constexpr int16_t box_index_step(int x, int y, int z) {
   return int16_t((x * BlockNodeIndex::width + y) * BlockNodeIndex::width + z);
 }
-// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
-inline Real distribution_coefficient(const Real* c, Real x, Real y, Real z, Real w) {
-  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
-}
-// Per bit of a NeighbourPattern (box_bit(d)): the offset d, its weight and its step in
-// BlockNodeIndex (bits outside the 5×5×5 box, and d = 0's own-mass bit, are never visited).
-struct ShareOffset {
-  Real x, y, z, weight;
-  int32_t step;
-};
-inline const std::array<ShareOffset, NeighbourPattern::words * 64>& share_offsets() {
-  static const auto table = [] {
-    std::array<ShareOffset, NeighbourPattern::words * 64> out{};
-    for (const Offset& d : neighbour_offsets())
-      out[size_t(box_bit(d.x, d.y, d.z))] = {Real(d.x), Real(d.y), Real(d.z), d.weight, box_index_step(d.x, d.y, d.z)};
-    return out;
-  }();
-  return table;
-}
 // Calls fn(receiver, C_li) for the shares of the distribution of node n of the block whose
-// BlockNodeIndex is `index`, in the neighbour_offsets order (the pattern's bits in order);
-// receiver is the node's index in the grid.
+// BlockNodeIndex is `index`, in order; receiver is the node's index in the grid.
 // Inlined, so that a sum fn keeps over the shares stays in registers: called out of line,
 // the read-back's eight-lane sum went through the stack at every share on AVX2 (a
 // store-forwarding stall each; docs/benchmarks.md, "Eight-lane splats on AVX2").
 template <class Fn>
 [[gnu::always_inline]] inline void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
   const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
-  const ShareOffset* offsets = share_offsets().data();
-  const Real c[4] = {d.fit[0], d.fit[1], d.fit[2], d.fit[3]};
-  for (int w = 0; w < NeighbourPattern::words; ++w) {
-    uint64_t bits = d.pattern.bits[size_t(w)];
-    if (w == own_mass_bit >> 6) bits &= ~(uint64_t(1) << (own_mass_bit & 63));  // d = 0 is no share
-    for (; bits; bits &= bits - 1) {
-      const ShareOffset& o = offsets[w * 64 + __builtin_ctzll(bits)];
-      fn(size_t(own[o.step]), distribution_coefficient(c, o.x, o.y, o.z, o.weight));
-    }
-  }
+  const Real* C = d.shares;
+  const int16_t* step = d.steps;
+  for (uint32_t s = 0; s < d.count; ++s) fn(size_t(own[step[s]]), C[s]);
+}
+
+// C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
+inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
+  return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
 }
 
 // (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours (zero:
@@ -218,14 +203,39 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
 }
 
 // The distributions remembered: a surface has few patterns (a flat face, its edges and
-// corners, a particle entering a cell), so the 4×4 solve is done once per pattern, not once
-// per node and step. Insert-only during a step and shared by the threads (entries never
-// move); a pure function of the pattern, so results do not depend on which thread computed
-// it, nor on when the memo was last emptied. std::allocator, which honours the entries'
-// 64-byte alignment (tbb_allocator, the map's default, does not promise it).
-using DistributionMemo =
-    tbb::concurrent_unordered_map<NeighbourPattern, DdmpDistribution, NeighbourPatternHash, std::equal_to<NeighbourPattern>,
-                                  std::allocator<std::pair<const NeighbourPattern, DdmpDistribution>>>;
+// corners, a particle entering a cell), so the 4×4 solve and the shares are computed once
+// per pattern, not once per node and step. Insert-only during a step and shared by the
+// threads (entries never move); a pure function of the pattern, so results do not depend
+// on which thread computed it, nor on when the memo was last emptied.
+// A distribution and its shares in one allocation: the header, the coefficients, the steps.
+class DistributionStorage {
+ public:
+  DistributionStorage(const NeighbourPattern& pattern, const Fit& fit) {
+    const auto& offsets = neighbour_offsets();
+    uint32_t count = 0;
+    if (fit[0] != 0)
+      for (const Offset& d : offsets) count += pattern.sizeable(d);
+    bytes_.reset(new std::byte[sizeof(DdmpDistribution) + count * (sizeof(Real) + sizeof(int16_t))]);
+    auto* shares = reinterpret_cast<Real*>(bytes_.get() + sizeof(DdmpDistribution));
+    auto* steps = reinterpret_cast<int16_t*>(shares + count);
+    uint32_t s = 0;
+    if (count)
+      for (const Offset& d : offsets)
+        if (pattern.sizeable(d)) {
+          shares[s] = distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight);
+          steps[s++] = box_index_step(d.x, d.y, d.z);
+        }
+    distribution_ = new (bytes_.get()) DdmpDistribution{pattern, shares, steps, count};
+  }
+  const DdmpDistribution& distribution() const { return *distribution_; }
+
+ private:
+  static_assert(sizeof(DdmpDistribution) % alignof(Real) == 0, "the coefficients follow the header aligned");
+  static_assert(std::is_trivially_destructible_v<DdmpDistribution>, "freed with its bytes, no destructor run");
+  std::unique_ptr<std::byte[]> bytes_;  // DdmpDistribution is trivially destructible
+  const DdmpDistribution* distribution_ = nullptr;
+};
+using DistributionMemo = tbb::concurrent_unordered_map<NeighbourPattern, DistributionStorage, NeighbourPatternHash>;
 inline DistributionMemo& distribution_memo() {
   static DistributionMemo memo;
   return memo;
@@ -234,8 +244,9 @@ inline DistributionMemo& distribution_memo() {
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
 // (find_ddmp_small_mass_nodes, before any pointer into it is taken). A step's own patterns
 // must fit, or every step refits them all: the paper-size T2P30 lattice starts with ≈ 54,000
-// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.2 kB a pattern
-// (the map's node: its key, its 64-byte distribution, links) the limit is ≈ 25 MB.
+// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.6 kB a pattern
+// (≈ 50 shares of 10 B, the header, the map's node) the limit is ≈ 80 MB, 1.4 kB at most
+// (124 shares).
 // One memo for the process: Simulations step one at a time.
 inline constexpr size_t distribution_memo_limit = size_t(1) << 17;
 
@@ -252,11 +263,8 @@ inline void clear_distribution_memo() {
 inline const DdmpDistribution& memo_distribution(const NeighbourPattern& pattern) {
   DistributionMemo& memo = distribution_memo();
   const auto it = memo.find(pattern);
-  if (it != memo.end()) return it->second;
-  DdmpDistribution d;
-  d.pattern = pattern;
-  d.fit = fit_distribution(pattern);
-  return memo.insert({pattern, d}).first->second;
+  if (it != memo.end()) return it->second.distribution();
+  return memo.emplace(pattern, DistributionStorage(pattern, fit_distribution(pattern))).first->second.distribution();
 }
 
 // The memo's look-up behind a small direct-mapped cache per thread: the concurrent map's
@@ -346,11 +354,13 @@ void for_each_bit(uint64_t mask, Fn&& fn) {
 // Asks for the distributions of a block's nodes in `mask` to be brought into the cache, all
 // at once, before they are used one by one: they lie scattered in the memo, and waiting
 // for each in turn was a fifth of the read-back's time at paper size (perf, T2P20-E8,
-// 2026-11-28).
+// 2026-11-28). The header and the first coefficients (two lines); the rest streams.
 inline void prefetch_distributions(const DdmpNodalValues& nv, size_t b, uint64_t mask) {
   const DdmpDistribution* const* distribution = nv.distributions.data() + b * SparseGrid::nodes_per_block;
   for_each_bit(mask, [&](int n) {
-    if (distribution[n]) __builtin_prefetch(distribution[n]);
+    if (!distribution[n]) return;
+    __builtin_prefetch(distribution[n]);
+    __builtin_prefetch(reinterpret_cast<const char*>(distribution[n]) + 64);
   });
 }
 // Blocks in tiles of 3×3×3: a block's tile, its colour among the tiles (the parity of the
