@@ -25,6 +25,7 @@
 
 #include "mpm/bucket_buffer.hpp"
 #include "mpm/shape_ddmp.hpp"
+#include "mpm/simd.hpp"
 #include "mpm/sparse_grid.hpp"
 
 namespace latmpm::mpm {
@@ -52,6 +53,7 @@ struct DdmpNodalValues {
   // `handing_blocks` from handing_tile_begin[t] to [t + 1], in block-colour order (mod 3).
   std::array<std::vector<uint32_t>, 8> handing_blocks, handing_tile_begin;
   std::vector<std::array<int, 27>> neighbours;  // per block: block (dx, dy, dz) ∈ {−1, 0, 1}³ away, −1 inactive
+  uint64_t neighbours_layout = 0;               // the grid's layout() they were found for
   std::vector<Real> alpha;  // α per point at x^n (DdmpAlphaCache, fill_ddmp_alpha)
 
   // Whether the L pass left block b out (no node with mass this step: ddmp_nodal_velocity_gradient);
@@ -105,9 +107,22 @@ template <class Box, int... S>
 // the block below, the block's own `bw`, `Reach` of the block above — so it is 27 boxes,
 // each from one block; every box's loops have fixed counts (a template per box), and the
 // block's own 64 nodes are one of them.
+// The columns of a 4×4 block given by its rows: column[q][r] = row r's value q.
+[[gnu::always_inline]] inline void transpose_rows(Axes r0, Axes r1, Axes r2, Axes r3, Axes column[4]) {
+  const Axes even01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6), odd01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+  const Axes even23 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6), odd23 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+  column[0] = __builtin_shufflevector(even01, even23, 0, 1, 4, 5);
+  column[1] = __builtin_shufflevector(odd01, odd23, 0, 1, 4, 5);
+  column[2] = __builtin_shufflevector(even01, even23, 2, 3, 6, 7);
+  column[3] = __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7);
+}
+
+// A node's values are read four at a time: the last group may read past `Components`, within
+// the node's `Stride` values.
 template <int Reach, int Components, int Stride, class FirstValue>
 void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, BlockHalo<Reach, Components>& halo) {
   static_assert(Reach <= bw, "a halo reaches at most one block away");
+  static_assert((Components + 3) / 4 * 4 <= Stride, "a node's last group of four values lies within its stride");
   const auto box = [&](auto si, auto sj, auto sk) __attribute__((always_inline)) {
     // Per segment s (0 below, 1 own, 2 above): first local index in the block, count, first halo index.
     constexpr int first[3] = {bw - Reach, 0, 0}, count[3] = {Reach, bw, Reach}, start[3] = {0, Reach, Reach + bw};
@@ -122,12 +137,30 @@ void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, 
       return;
     }
     const Real* in = first_value(size_t(nb));
-    for (int c = 0; c < Components; ++c)
+    if constexpr (K == 1) {
+      // A whole row along k (4 nodes) at a time: its nodes' values four components at a time,
+      // turned into four component rows (transpose_rows). The boxes whose k segment is the
+      // block's own hold two thirds of the halo; one value at a time, the copy was the
+      // smoothing passes' largest part (perf, T2P20-E8, 2026-11-28).
       for (int i = 0; i < count[I]; ++i)
-        for (int j = 0; j < count[J]; ++j)
-          for (int k = 0; k < count[K]; ++k)
-            halo.v[c][start[I] + i][start[J] + j][start[K] + k] =
-                in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c];
+        for (int j = 0; j < count[J]; ++j) {
+          const Real* row = in + ((first[I] + i) * bw + (first[J] + j)) * bw * Stride;
+          for (int c0 = 0; c0 < Components; c0 += 4) {
+            Axes column[4];
+            transpose_rows(num::load<Axes>(row + c0), num::load<Axes>(row + Stride + c0),
+                           num::load<Axes>(row + 2 * Stride + c0), num::load<Axes>(row + 3 * Stride + c0), column);
+            for (int q = 0; q < 4 && c0 + q < Components; ++q)
+              num::store(&halo.v[c0 + q][start[I] + i][start[J] + j][start[K]], column[q]);
+          }
+        }
+    } else {
+      for (int c = 0; c < Components; ++c)
+        for (int i = 0; i < count[I]; ++i)
+          for (int j = 0; j < count[J]; ++j)
+            for (int k = 0; k < count[K]; ++k)
+              halo.v[c][start[I] + i][start[J] + j][start[K] + k] =
+                  in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c];
+    }
   };
   for_each_halo_box(box, std::make_integer_sequence<int, 27>{});
 }
@@ -180,7 +213,8 @@ template <int Axis, int NA, int NB, int NC>
 }  // namespace ddmp_grid_detail
 
 // Sizes the nodal values for the grid's active blocks (not zeroed: see below) and finds each
-// block's neighbours.
+// block's neighbours (again only when the set of blocks changed: 27 look-ups a block each
+// step were 1 % of a paper-size DDMP step).
 inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   const size_t blocks = grid.block_count();
@@ -191,8 +225,10 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   nv.handing.assign(blocks, 0);
   for (auto& list : nv.handing_blocks) list.clear();
   for (auto& list : nv.handing_tile_begin) list.clear();
-  nv.neighbours.resize(blocks);
   nv.mass_mask_current = false;
+  if (nv.neighbours_layout == grid.layout() && nv.neighbours.size() == blocks) return;
+  nv.neighbours.resize(blocks);
+  nv.neighbours_layout = grid.layout();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     const auto c = grid.coord(b);
     for (int dx = -1; dx <= 1; ++dx)

@@ -170,6 +170,51 @@ template <class Fn>
   for (uint32_t s = 0; s < d.count; ++s) fn(size_t(own[step[s]]), C[s]);
 }
 
+// The read-back's sums Σ_i C_li node_i of the block's nodes in `mask`, two nodes at a time,
+// their shares interleaved: add(sum, receiver, C) adds one share to a node's sum, and
+// done(n, sum) takes node n's sum. Each sum is one chain of multiply-adds (≈ 50 shares, 4
+// cycles each), and one node at a time left the core waiting on that chain: perf put the
+// read-back's samples on the multiply-add and the next share's load (T2P20-E8, 2026-11-28).
+// Two chains overlap; each node's sum still adds its shares in their order from zero, so the
+// bits are those of one node at a time.
+template <class Add, class Done>
+[[gnu::always_inline]] inline void for_each_share_pair(uint64_t mask, const DdmpDistribution* const* distribution,
+                                                       const BlockNodeIndex& index, Done&& done, Add&& add) {
+  const auto own = [&](int n) { return index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3); };
+  while (mask) {
+    const int n0 = __builtin_ctzll(mask);
+    mask &= mask - 1;
+    const DdmpDistribution& d0 = *distribution[n0];
+    const uint32_t* own0 = own(n0);
+    num::NodeSum sum0;
+    if (!mask) {
+      for (uint32_t s = 0; s < d0.count; ++s) add(sum0, size_t(own0[d0.steps[s]]), d0.shares[s]);
+      done(n0, sum0);
+      return;
+    }
+    const int n1 = __builtin_ctzll(mask);
+    mask &= mask - 1;
+    const DdmpDistribution& d1 = *distribution[n1];
+    const uint32_t* own1 = own(n1);
+    num::NodeSum sum1;
+    const uint32_t both = std::min(d0.count, d1.count);
+    uint32_t s = 0;
+    for (; s < both; ++s) {
+      add(sum0, size_t(own0[d0.steps[s]]), d0.shares[s]);
+      add(sum1, size_t(own1[d1.steps[s]]), d1.shares[s]);
+    }
+    for (uint32_t t = s; t < d0.count; ++t) add(sum0, size_t(own0[d0.steps[t]]), d0.shares[t]);
+    for (uint32_t t = s; t < d1.count; ++t) add(sum1, size_t(own1[d1.steps[t]]), d1.shares[t]);
+    done(n0, sum0);
+    done(n1, sum1);
+  }
+}
+
+// The halves of a node (num::low_lanes, num::high_lanes) that hold lanes first … first + count − 1.
+constexpr unsigned halves_of(int first, int count) {
+  return (first < 4 ? num::low_lanes : 0u) | (first + count > 4 ? num::high_lanes : 0u);
+}
+
 // C_li for the neighbour i at offset d = i − l, weight w, of a node with coefficients c.
 inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w) {
   return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
@@ -556,9 +601,6 @@ template <int First, int Count>
 void spread_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
   using namespace ddmp_grid_detail;
   constexpr int massless_count = Count < 3 ? Count : 3;
-  constexpr auto halves_of = [](int first, int count) {
-    return (first < 4 ? num::low_lanes : 0u) | (first + count > 4 ? num::high_lanes : 0u);
-  };
   // Whole nodes (or the halves holding the lanes) summed, one multiply-add a share
   // (num::NodeSum); the lanes kept. The sums read sizeable nodes only, so each is written
   // straight back.
@@ -567,23 +609,21 @@ void spread_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
     if (!nv.handing[b]) return;
     BlockNodeIndex index;
     load_block_node_index(nv, b, index);
-    const auto read_back = [&](int n, auto halves, auto count) __attribute__((always_inline)) {
-      const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
-      num::NodeSum sum;
-      for_each_share(d, index, n, [&](size_t receiver, Real C) {
-        sum.template add<decltype(halves)::value>(C, nodes + receiver * lane::count);
-      });
-      Real* node = grid.block(b) + n * lane::count;
-      for (int c = First; c < First + decltype(count)::value; ++c) node[c] = sum[c];
+    const DdmpDistribution* const* distribution = nv.distributions.data() + b * SparseGrid::nodes_per_block;
+    Real* block = grid.block(b);
+    const auto read_back = [&](uint64_t mask, auto halves, auto count) __attribute__((always_inline)) {
+      constexpr unsigned H = decltype(halves)::value;
+      constexpr int lanes = decltype(count)::value;
+      for_each_share_pair(mask, distribution, index, [&](int n, const num::NodeSum& sum) {
+        Real* node = block + n * lane::count;
+        for (int c = First; c < First + lanes; ++c) node[c] = sum[c];
+      }, [&](num::NodeSum& sum, size_t receiver, Real C) { sum.template add<H>(C, nodes + receiver * lane::count); });
     };
     prefetch_distributions(nv, b, nv.handing[b]);
-    for_each_bit(nv.handing[b] & nv.mass_mask[b], [&](int n) {
-      read_back(n, std::integral_constant<unsigned, halves_of(First, Count)>{}, std::integral_constant<int, Count>{});
-    });
-    for_each_bit(nv.handing[b] & ~nv.mass_mask[b], [&](int n) {
-      read_back(n, std::integral_constant<unsigned, halves_of(First, massless_count)>{},
-                std::integral_constant<int, massless_count>{});
-    });
+    read_back(nv.handing[b] & nv.mass_mask[b], std::integral_constant<unsigned, halves_of(First, Count)>{},
+              std::integral_constant<int, Count>{});
+    read_back(nv.handing[b] & ~nv.mass_mask[b], std::integral_constant<unsigned, halves_of(First, massless_count)>{},
+              std::integral_constant<int, massless_count>{});
   });
 }
 

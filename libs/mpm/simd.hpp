@@ -164,13 +164,17 @@ class MaskedLanes {
         mask_{half_mask(lanes & 15), half_mask((lanes >> 4) & 15)},
         halves_(((lanes & 15) ? low_lanes : 0) | ((lanes >> 4) ? high_lanes : 0)) {}
   unsigned halves() const { return halves_; }
+  // `node` is a grid node (64-byte aligned). Its halves are read and written as Axes, which
+  // alias only Real: with the intrinsics' own loads and stores (which alias anything) the
+  // hand-on's loop reloaded its share count and the grid's base pointer at every share.
   template <unsigned Halves = both_halves>
   void add_into(Real* node, Real c) const {
     const __m256d copies = _mm256_set1_pd(c);
     for (int h = 0; h < 2; ++h) {
       if (((Halves >> h) & 1) == 0) continue;
-      const __m256d target = _mm256_loadu_pd(node + 4 * h);
-      _mm256_storeu_pd(node + 4 * h, _mm256_blendv_pd(target, _mm256_fmadd_pd(copies, source_[h], target), mask_[h]));
+      Axes& half = *reinterpret_cast<Axes*>(node + 4 * h);
+      const __m256d target = (__m256d)half;
+      half = (Axes)_mm256_blendv_pd(target, _mm256_fmadd_pd(copies, source_[h], target), mask_[h]);
     }
   }
 

@@ -1,5 +1,7 @@
 #include "mpm/sparse_grid.hpp"
 
+#include <atomic>
+
 namespace latmpm::mpm {
 
 namespace {
@@ -22,6 +24,8 @@ SparseGrid::Coord SparseGrid::key_to_coord(uint64_t key) {
 void SparseGrid::set_active_blocks(const std::vector<uint64_t>& sorted_keys) {
   if (sorted_keys == keys_) return;
   keys_ = sorted_keys;
+  static std::atomic<uint64_t> layouts{0};
+  layout_ = ++layouts;
   data_.assign(keys_.size() * reals_per_block, Real(0));
   index_.clear();
   index_.reserve(keys_.size() * 2);

@@ -60,6 +60,9 @@ class SparseGrid {
   int find(int bx, int by, int bz) const;
 
   size_t block_count() const { return keys_.size(); }
+  // Names this set of active blocks: it changes whenever set_active_blocks changes the set,
+  // and no two sets, of this grid or any other, share one (for caches of per-block look-ups).
+  uint64_t layout() const { return layout_; }
   uint64_t key(size_t b) const { return keys_[b]; }
   Coord coord(size_t b) const { return key_to_coord(keys_[b]); }
   Real* block(size_t b) { return data_.data() + b * reals_per_block; }
@@ -96,6 +99,7 @@ class SparseGrid {
   std::vector<uint64_t> keys_;
   NodeStorage data_;
   std::unordered_map<uint64_t, int> index_;
+  uint64_t layout_ = 0;  // 0: no block set yet
 };
 
 }  // namespace latmpm::mpm
