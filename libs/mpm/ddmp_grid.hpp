@@ -102,11 +102,6 @@ template <class Box, int... S>
    ...);
 }
 
-// Copies the halo's values: value c of node n of block nb is first_value(nb)[n · Stride + c];
-// zero in inactive blocks. Per axis the halo splits into three segments — `Reach` nodes of
-// the block below, the block's own `bw`, `Reach` of the block above — so it is 27 boxes,
-// each from one block; every box's loops have fixed counts (a template per box), and the
-// block's own 64 nodes are one of them.
 // The columns of a 4×4 block given by its rows: column[q][r] = row r's value q.
 [[gnu::always_inline]] inline void transpose_rows(Axes r0, Axes r1, Axes r2, Axes r3, Axes column[4]) {
   const Axes even01 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6), odd01 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
@@ -117,8 +112,13 @@ template <class Box, int... S>
   column[3] = __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7);
 }
 
-// A node's values are read four at a time: the last group may read past `Components`, within
-// the node's `Stride` values.
+// Copies the halo's values: value c of node n of block nb is first_value(nb)[n · Stride + c];
+// zero in inactive blocks. Per axis the halo splits into three segments — `Reach` nodes of
+// the block below, the block's own `bw`, `Reach` of the block above — so it is 27 boxes,
+// each from one block; every box's loops have fixed counts (a template per box), and the
+// block's own 64 nodes are one of them. Where a box's rows along k are whole (its k segment is
+// the block's own), a node's values are read four at a time: the last group may read past
+// `Components`, within the node's `Stride` values.
 template <int Reach, int Components, int Stride, class FirstValue>
 void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, BlockHalo<Reach, Components>& halo) {
   static_assert(Reach <= bw, "a halo reaches at most one block away");
@@ -139,9 +139,10 @@ void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, 
     const Real* in = first_value(size_t(nb));
     if constexpr (K == 1) {
       // A whole row along k (4 nodes) at a time: its nodes' values four components at a time,
-      // turned into four component rows (transpose_rows). The boxes whose k segment is the
-      // block's own hold two thirds of the halo; one value at a time, the copy was the
-      // smoothing passes' largest part (perf, T2P20-E8, 2026-11-28).
+      // turned into four component rows (transpose_rows). These boxes hold two thirds of the
+      // halo, and copied one value at a time they cost more than the smoothing passes
+      // themselves (perf, T2P20-E8, 2026-11-28); what is left waits mostly on the first loads
+      // of the neighbouring blocks.
       for (int i = 0; i < count[I]; ++i)
         for (int j = 0; j < count[J]; ++j) {
           const Real* row = in + ((first[I] + i) * bw + (first[J] + j)) * bw * Stride;

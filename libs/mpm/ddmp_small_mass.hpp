@@ -179,7 +179,7 @@ template <class Fn>
 // bits are those of one node at a time.
 template <class Add, class Done>
 [[gnu::always_inline]] inline void for_each_share_pair(uint64_t mask, const DdmpDistribution* const* distribution,
-                                                       const BlockNodeIndex& index, Done&& done, Add&& add) {
+                                                       const BlockNodeIndex& index, Add&& add, Done&& done) {
   const auto own = [&](int n) { return index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3); };
   while (mask) {
     const int n0 = __builtin_ctzll(mask);
@@ -614,10 +614,13 @@ void spread_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
     const auto read_back = [&](uint64_t mask, auto halves, auto count) __attribute__((always_inline)) {
       constexpr unsigned H = decltype(halves)::value;
       constexpr int lanes = decltype(count)::value;
-      for_each_share_pair(mask, distribution, index, [&](int n, const num::NodeSum& sum) {
-        Real* node = block + n * lane::count;
-        for (int c = First; c < First + lanes; ++c) node[c] = sum[c];
-      }, [&](num::NodeSum& sum, size_t receiver, Real C) { sum.template add<H>(C, nodes + receiver * lane::count); });
+      for_each_share_pair(
+          mask, distribution, index,
+          [&](num::NodeSum& sum, size_t receiver, Real C) { sum.template add<H>(C, nodes + receiver * lane::count); },
+          [&](int n, const num::NodeSum& sum) {
+            Real* node = block + n * lane::count;
+            for (int c = First; c < First + lanes; ++c) node[c] = sum[c];
+          });
     };
     prefetch_distributions(nv, b, nv.handing[b]);
     read_back(nv.handing[b] & nv.mass_mask[b], std::integral_constant<unsigned, halves_of(First, Count)>{},
