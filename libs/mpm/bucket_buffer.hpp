@@ -63,12 +63,14 @@ inline int first_table_block(int bucket_coord) {
   return floor_div(ParticleBuckets::cells * bucket_coord + ParticleBuckets::buffer_lo, SparseGrid::block_width);
 }
 
-// Calls fn(grid_nodes, buffer_nodes, count) for every run of nodes of the bucket's columns
-// (node columns, bucket_columns.hpp) that is contiguous in both the grid block and the buffer
-// (along k, at most a block wide).
-template <class GridPtr, class Fn>
-void for_each_box_run(const Bucket& b, const BucketColumns& columns, const BlockTable& table, GridPtr grid_blocks,
-                      BucketBuffer& buffer, Fn&& fn) {
+// Calls fn(block, node, i, j, k, count) for every run of nodes of the bucket's columns (node
+// columns, bucket_columns.hpp) that is contiguous in both the grid block and the buffer
+// (along k, at most a block wide): `block` the active block's index from the table, `node`
+// the run's first node in it ((li · 4 + lj) · 4 + lk), (i, j, k) that node's grid
+// coordinates, `count` nodes along k.
+template <class Fn>
+void for_each_column_run(const Bucket& b, const BucketColumns& columns, const BlockTable& table,
+                         const BucketBuffer& buffer, Fn&& fn) {
   constexpr int bw = SparseGrid::block_width;
   int first[3];
   for (int a = 0; a < 3; ++a) first[a] = first_table_block(b.coord[a]);
@@ -82,11 +84,21 @@ void for_each_box_run(const Bucket& b, const BucketColumns& columns, const Block
         const int bk = floor_div(k, bw), lk = k - bw * bk;
         const int count = std::min(bw - lk, k_hi - k + 1);
         const int block = table[((bi - first[0]) * 4 + (bj - first[1])) * 4 + (bk - first[2])];
-        fn(grid_blocks(block) + SparseGrid::node_offset(li, lj, lk), buffer.data.data() + buffer.offset(i, j, k), count);
+        fn(block, (li * bw + lj) * bw + lk, i, j, k, count);
         k += count;
       }
     }
   }
+}
+
+// Calls fn(grid_nodes, buffer_nodes, count) for every run of for_each_column_run, with the
+// grid's lanes of the run (grid_blocks(block) is a block's first lane) and the buffer's.
+template <class GridPtr, class Fn>
+void for_each_box_run(const Bucket& b, const BucketColumns& columns, const BlockTable& table, GridPtr grid_blocks,
+                      BucketBuffer& buffer, Fn&& fn) {
+  for_each_column_run(b, columns, table, buffer, [&](int block, int node, int i, int j, int k, int count) {
+    fn(grid_blocks(block) + node * lane::count, buffer.data.data() + buffer.offset(i, j, k), count);
+  });
 }
 
 // Zeroes the buffer nodes of the bucket's columns. Runs are a few nodes long: one SIMD store

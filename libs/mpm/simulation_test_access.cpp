@@ -92,7 +92,7 @@ SimulationTestAccess::Gathered SimulationTestAccess::gather_from_grid(const Simu
       buffer.attach(b);
       buffer.ddmp_alpha = c.ddmp_partition();
       copy_box_from_grid(b, c.columns[bi], c.tables[bi], s.grid, buffer);
-      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
+      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.columns[bi], c.tables[bi], c.ddmp_nodal, buffer);
       buffer.grid = &s.grid;
       for (uint32_t p = b.begin; p < b.end; ++p) {
         if (c.body_info[size_t(copy.body[p])].marked_once) continue;  // out of the step: their nodes are outside the box

@@ -296,12 +296,12 @@ void scatter(SolverState& s, StepContext& c) {
         buffer.ddmp_alpha = c.ddmp_partition();
         buffer.ddmp_alpha_cache = alpha_cache;
         clear_box(b, c.columns[colour[k]], buffer);
-        if constexpr (nodal_stress) clear_ddmp_box(b, c.tables[colour[k]], buffer);
+        if constexpr (nodal_stress) clear_ddmp_box(b, c.columns[colour[k]], c.tables[colour[k]], buffer);
         scatter_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(),
                                     c.settings.cell_size, buffer);
         if constexpr (Shape::uses_domain_vertices) c.cpdi_wide[colour[k]].swap(buffer.wide_points);
         add_box_to_grid(b, c.columns[colour[k]], c.tables[colour[k]], s.grid, buffer);
-        if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.tables[colour[k]], buffer, c.ddmp_nodal);
+        if constexpr (nodal_stress) add_ddmp_box_to_grid(b, c.columns[colour[k]], c.tables[colour[k]], buffer, c.ddmp_nodal);
       }
     });
     c.domain.exchange_halo(s.grid, ci);  // shared nodes as one process has them after this colour
@@ -333,7 +333,7 @@ void gather_buckets(SolverState& s, StepContext& c, Real dt, std::vector<BucketT
       buffer.ddmp_alpha = c.ddmp_partition();
       buffer.ddmp_alpha_cache = alpha_cache;
       copy_box_from_grid(b, c.columns[bi], c.tables[bi], s.grid, buffer);
-      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.tables[bi], c.ddmp_nodal, buffer);
+      if constexpr (nodal_gradient) copy_ddmp_box_from_grid(b, c.columns[bi], c.tables[bi], c.ddmp_nodal, buffer);
       gather_bucket<Shape, Mode>(b, &s.buckets.runs()[b.run_begin], s.particles, c.body_info.data(), parameters,
                                  buffer, tallies[bi], &c.run_tallies[b.run_begin]);
     }
