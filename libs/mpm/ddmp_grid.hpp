@@ -70,16 +70,6 @@ namespace ddmp_grid_detail {
 constexpr int bw = SparseGrid::block_width;
 inline int neighbour_index(int dx, int dy, int dz) { return (dx + 1) * 9 + (dy + 1) * 3 + (dz + 1); }
 
-// Position of node (i, j, k) (grid coordinates) in its block, and the block's place in a
-// bucket's table of 4×4×4 blocks.
-inline int local_index(int i, int j, int k) {
-  return ((i - bw * floor_div(i, bw)) * bw + (j - bw * floor_div(j, bw))) * bw + (k - bw * floor_div(k, bw));
-}
-inline int table_index(const Bucket& b, int i, int j, int k) {
-  return ((floor_div(i, bw) - first_table_block(b.coord[0])) * 4 + (floor_div(j, bw) - first_table_block(b.coord[1]))) * 4 +
-         (floor_div(k, bw) - first_table_block(b.coord[2]));
-}
-
 // `Components` values of the nodes at local coordinates −Reach … bw − 1 + Reach around a
 // block, component by component: value c of halo node (i, j, k) (local + Reach) at
 // v[c][i][j][k], so that the smoothing passes run along whole rows of one component (a row
