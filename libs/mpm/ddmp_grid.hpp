@@ -217,7 +217,7 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   for (auto& list : nv.handing_blocks) list.clear();
   for (auto& list : nv.handing_tile_begin) list.clear();
   nv.mass_mask_current = false;
-  if (nv.neighbours_layout == grid.layout() && nv.neighbours.size() == blocks) return;
+  if (nv.neighbours_layout == grid.layout()) return;
   nv.neighbours.resize(blocks);
   nv.neighbours_layout = grid.layout();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
@@ -413,8 +413,9 @@ inline void copy_ddmp_box_from_grid(const Bucket& b, const BucketColumns& column
                                     const DdmpNodalValues& nv, BucketBuffer& buffer) {
   for_each_ddmp_box_run(b, columns, table, buffer, [&](Real* l, int block, int node, int count) {
     const size_t values = size_t(count) * DdmpNodalValues::count;
-    if (block < 0 || nv.gradient_left_out(size_t(block))) std::fill(l, l + values, Real(0));
-    else std::copy(nv.node(size_t(block), node), nv.node(size_t(block), node) + values, l);
+    if (block < 0 || nv.gradient_left_out(size_t(block))) return std::fill(l, l + values, Real(0));
+    const Real* g = nv.node(size_t(block), node);
+    std::copy(g, g + values, l);
   });
 }
 

@@ -134,6 +134,8 @@ struct BlockNodeIndex {
   static_assert(width == bw + 2 * reach, "the halo of a block is 8 nodes a side");
   uint32_t node[width * width * width];
   static int at(int i, int j, int k) { return ((i + reach) * width + (j + reach)) * width + (k + reach); }
+  // The entry of the block's node n (n = (i·4 + j)·4 + k).
+  static int of_node(int n) { return at(n >> 4, (n >> 2) & 3, n & 3); }
 };
 // A line of 8 indices along z at a time: `reach` from the block below, the block's own 4,
 // `reach` from the block above.
@@ -164,7 +166,7 @@ constexpr int16_t box_index_step(int x, int y, int z) {
 // store-forwarding stall each; docs/benchmarks.md, "Eight-lane splats on AVX2").
 template <class Fn>
 [[gnu::always_inline]] inline void for_each_share(const DdmpDistribution& d, const BlockNodeIndex& index, int n, Fn&& fn) {
-  const uint32_t* own = index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3);
+  const uint32_t* own = index.node + BlockNodeIndex::of_node(n);
   const Real* C = d.shares;
   const int16_t* step = d.steps;
   for (uint32_t s = 0; s < d.count; ++s) fn(size_t(own[step[s]]), C[s]);
@@ -180,31 +182,28 @@ template <class Fn>
 template <class Add, class Done>
 [[gnu::always_inline]] inline void for_each_share_pair(uint64_t mask, const DdmpDistribution* const* distribution,
                                                        const BlockNodeIndex& index, Add&& add, Done&& done) {
-  const auto own = [&](int n) { return index.node + BlockNodeIndex::at(n >> 4, (n >> 2) & 3, n & 3); };
+  // Share s of node n's distribution d into its sum.
+  const auto share = [&](num::NodeSum& sum, int n, const DdmpDistribution& d, uint32_t s) __attribute__((always_inline)) {
+    add(sum, size_t(index.node[BlockNodeIndex::of_node(n) + d.steps[s]]), d.shares[s]);
+  };
   while (mask) {
     const int n0 = __builtin_ctzll(mask);
     mask &= mask - 1;
     const DdmpDistribution& d0 = *distribution[n0];
-    const uint32_t* own0 = own(n0);
     num::NodeSum sum0;
     if (!mask) {
-      for (uint32_t s = 0; s < d0.count; ++s) add(sum0, size_t(own0[d0.steps[s]]), d0.shares[s]);
+      for (uint32_t s = 0; s < d0.count; ++s) share(sum0, n0, d0, s);
       done(n0, sum0);
       return;
     }
     const int n1 = __builtin_ctzll(mask);
     mask &= mask - 1;
     const DdmpDistribution& d1 = *distribution[n1];
-    const uint32_t* own1 = own(n1);
     num::NodeSum sum1;
     const uint32_t both = std::min(d0.count, d1.count);
-    uint32_t s = 0;
-    for (; s < both; ++s) {
-      add(sum0, size_t(own0[d0.steps[s]]), d0.shares[s]);
-      add(sum1, size_t(own1[d1.steps[s]]), d1.shares[s]);
-    }
-    for (uint32_t t = s; t < d0.count; ++t) add(sum0, size_t(own0[d0.steps[t]]), d0.shares[t]);
-    for (uint32_t t = s; t < d1.count; ++t) add(sum1, size_t(own1[d1.steps[t]]), d1.shares[t]);
+    for (uint32_t s = 0; s < both; ++s) share(sum0, n0, d0, s), share(sum1, n1, d1, s);
+    for (uint32_t s = both; s < d0.count; ++s) share(sum0, n0, d0, s);
+    for (uint32_t s = both; s < d1.count; ++s) share(sum1, n1, d1, s);
     done(n0, sum0);
     done(n1, sum1);
   }
@@ -588,9 +587,11 @@ void move_ddmp_small_mass_lanes(SparseGrid& grid, DdmpNodalValues& nv) {
       // Each block's distributions asked for one block ahead, so that their misses overlap
       // the block before (prefetch_distributions): the hand-on 6–11 % faster at paper size
       // (perf, two builds side by side, both orders; the read-back measured no gain from it).
-      prefetch_distributions(nv, order[tile_begin[tile]], nv.handing[order[tile_begin[tile]]]);
-      for (uint32_t e = tile_begin[tile]; e < tile_begin[tile + 1]; ++e) {
-        if (e + 1 < tile_begin[tile + 1]) prefetch_distributions(nv, order[e + 1], nv.handing[order[e + 1]]);
+      const auto prefetch = [&](uint32_t e) { prefetch_distributions(nv, order[e], nv.handing[order[e]]); };
+      const uint32_t first = tile_begin[tile], end = tile_begin[tile + 1];
+      prefetch(first);
+      for (uint32_t e = first; e < end; ++e) {
+        if (e + 1 < end) prefetch(e + 1);
         hand_on_block(order[e]);
       }
     });
