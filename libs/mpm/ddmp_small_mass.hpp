@@ -182,28 +182,29 @@ template <class Fn>
 template <class Add, class Done>
 [[gnu::always_inline]] inline void for_each_share_pair(uint64_t mask, const DdmpDistribution* const* distribution,
                                                        const BlockNodeIndex& index, Add&& add, Done&& done) {
-  // Share s of node n's distribution d into its sum.
-  const auto share = [&](num::NodeSum& sum, int n, const DdmpDistribution& d, uint32_t s) __attribute__((always_inline)) {
-    add(sum, size_t(index.node[BlockNodeIndex::of_node(n) + d.steps[s]]), d.shares[s]);
-  };
+  // Share s of distribution d into a node's sum; own: the node's entry in the index.
+  const auto share = [&](num::NodeSum& sum, const uint32_t* own, const DdmpDistribution& d, uint32_t s)
+                         __attribute__((always_inline)) { add(sum, size_t(own[d.steps[s]]), d.shares[s]); };
   while (mask) {
     const int n0 = __builtin_ctzll(mask);
     mask &= mask - 1;
     const DdmpDistribution& d0 = *distribution[n0];
+    const uint32_t* own0 = index.node + BlockNodeIndex::of_node(n0);
     num::NodeSum sum0;
     if (!mask) {
-      for (uint32_t s = 0; s < d0.count; ++s) share(sum0, n0, d0, s);
+      for (uint32_t s = 0; s < d0.count; ++s) share(sum0, own0, d0, s);
       done(n0, sum0);
       return;
     }
     const int n1 = __builtin_ctzll(mask);
     mask &= mask - 1;
     const DdmpDistribution& d1 = *distribution[n1];
+    const uint32_t* own1 = index.node + BlockNodeIndex::of_node(n1);
     num::NodeSum sum1;
     const uint32_t both = std::min(d0.count, d1.count);
-    for (uint32_t s = 0; s < both; ++s) share(sum0, n0, d0, s), share(sum1, n1, d1, s);
-    for (uint32_t s = both; s < d0.count; ++s) share(sum0, n0, d0, s);
-    for (uint32_t s = both; s < d1.count; ++s) share(sum1, n1, d1, s);
+    for (uint32_t s = 0; s < both; ++s) share(sum0, own0, d0, s), share(sum1, own1, d1, s);
+    for (uint32_t s = both; s < d0.count; ++s) share(sum0, own0, d0, s);
+    for (uint32_t s = both; s < d1.count; ++s) share(sum1, own1, d1, s);
     done(n0, sum0);
     done(n1, sum1);
   }
