@@ -45,6 +45,15 @@ struct DdmpNodalValues {
   uint64_t distribution_generation = 0;                // of the memo the distributions point into
   std::vector<uint64_t> handing;                       // per block: the nodes that hand on
   std::vector<uint64_t> sizeable_mask, mass_mask;      // per block: nodes with mass ≥ the small mass, > 0
+  // What the last find_ddmp_small_mass_nodes saw and decided: a block whose 27 blocks around
+  // kept their masks keeps its nodes' patterns, hence whether they hand on and their
+  // distributions, and is not looked at again (most blocks, most steps).
+  struct LastFind {
+    uint64_t layout = 0, generation = 0;        // of the grid's blocks and of the memo; 0: nothing to reuse
+    Real small_mass = 0;                        // the threshold it used
+    std::vector<uint64_t> candidates, handing;  // per block: the nodes that may hand on, and those that do
+    std::vector<uint8_t> changed;               // per block, this step: its masks are not the last find's
+  } last_find;
   // mass_mask is this step's: find_ddmp_small_mass_nodes ran after the step's grid was
   // prepared (the mass mapped by its scatter, before any node handed its mass on).
   bool mass_mask_current = false;
@@ -213,11 +222,11 @@ inline void prepare_ddmp_nodal_values(const SparseGrid& grid, DdmpNodalValues& n
   // distributions are read only where `handing` says so.
   nv.values.resize(blocks * SparseGrid::nodes_per_block * DdmpNodalValues::count);
   nv.distributions.resize(blocks * SparseGrid::nodes_per_block);
-  nv.handing.assign(blocks, 0);
-  for (auto& list : nv.handing_blocks) list.clear();
-  for (auto& list : nv.handing_tile_begin) list.clear();
+  nv.handing.assign(blocks, 0);  // until find_ddmp_small_mass_nodes, nothing hands on
   nv.mass_mask_current = false;
   if (nv.neighbours_layout == grid.layout()) return;
+  for (auto& list : nv.handing_blocks) list.clear();  // of other blocks: find_ddmp_small_mass_nodes remakes them
+  for (auto& list : nv.handing_tile_begin) list.clear();
   nv.neighbours.resize(blocks);
   nv.neighbours_layout = grid.layout();
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {

@@ -352,7 +352,10 @@ size_t Simulation::grid_memory_bytes() const {
   const DdmpNodalValues& d = context_->ddmp_nodal;
   return state_.grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
          d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.distributions.capacity() * sizeof(d.distributions[0]) +
-         (d.handing.capacity() + d.sizeable_mask.capacity() + d.mass_mask.capacity()) * sizeof(uint64_t);
+         (d.handing.capacity() + d.sizeable_mask.capacity() + d.mass_mask.capacity() +
+          d.last_find.candidates.capacity() + d.last_find.handing.capacity()) *
+             sizeof(uint64_t) +
+         d.last_find.changed.capacity();
 }
 
 size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(state_.particles); }
