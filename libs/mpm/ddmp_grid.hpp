@@ -40,7 +40,7 @@ struct DdmpDistribution;
 // hand on their lanes (bit n = node n), and per such node its distribution.
 struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
-  std::vector<Real> values;
+  NodeStorage values;  // laid out like the grid's lanes, and on large pages like them
   std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
   uint64_t distribution_generation = 0;                // of the memo the distributions point into
   std::vector<uint64_t> handing;                       // per block: the nodes that hand on

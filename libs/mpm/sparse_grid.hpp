@@ -11,7 +11,6 @@
 // over the step, and constraint = 1 + index of the rigid body whose points touch the node
 // (0 = free). Eight lanes make one node a 64-byte cache line.
 #pragma once
-#include <tbb/cache_aligned_allocator.h>
 
 #include <array>
 #include <cstddef>
@@ -19,6 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/large_pages.hpp"
 #include "mpm/real.hpp"
 
 namespace latmpm::mpm {
@@ -27,8 +27,9 @@ namespace latmpm::mpm {
 // std::vector's allocator the grid and the bucket buffers began 16 bytes past a line (glibc's
 // large blocks) and every node load and store of the node loops spanned two lines; aligned,
 // the uGIMP step takes 2–4 % less CPU with the same bits (docs/benchmarks.md, "What bounds
-// the uGIMP rate").
-using NodeStorage = std::vector<Real, tbb::cache_aligned_allocator<Real>>;
+// the uGIMP rate"). A large grid lies on 2 MB pages (core/large_pages.hpp): its blocks are
+// visited out of order, a 4 kB page each.
+using NodeStorage = std::vector<Real, LargePageAllocator<Real>>;
 
 namespace lane {
 inline constexpr int mass = 0;
