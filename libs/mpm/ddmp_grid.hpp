@@ -32,10 +32,11 @@ namespace latmpm::mpm {
 
 struct DdmpDistribution;
 
-// Per grid node, in block order like the grid (block · 64 + node):
-//   after P2G: M_j = Σ_p (1 − α_p) S_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy;
-//   while small-mass nodes are handed on: the lanes being moved or read back;
-//   before G2P: L_j, row-major (9 values).
+// Per block, `count` values a node (block · 64 · count):
+//   after P2G: M_j = Σ_p (1 − α_p) S_j(x_p) (−V_p σ_p), Voigt order xx yy zz yz xz xy, one
+//     component at a time: component c of node n at c · 64 + n (stress_component), so that
+//     the smoothing pass's halo copies rows of four nodes as they lie;
+//   before G2P: L_j, node by node, row-major (9 values a node: node(b, n)).
 // Small-mass nodes (find_ddmp_small_mass_nodes): per block a 64-bit mask of the nodes that
 // hand on their lanes (bit n = node n), and per such node its distribution.
 struct DdmpNodalValues {
@@ -69,6 +70,14 @@ struct DdmpNodalValues {
   // its L is then 0, which copy_ddmp_box_from_grid supplies.
   bool gradient_left_out(size_t b) const { return mass_mask_current && mass_mask[b] == 0; }
 
+  // M's component c of the block's 64 nodes (after P2G).
+  Real* stress_component(size_t block, int c) {
+    return values.data() + (block * count + size_t(c)) * SparseGrid::nodes_per_block;
+  }
+  const Real* stress_component(size_t block, int c) const {
+    return values.data() + (block * count + size_t(c)) * SparseGrid::nodes_per_block;
+  }
+  // L_j of node n (before G2P).
   Real* node(size_t block, int n) { return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count; }
   const Real* node(size_t block, int n) const {
     return values.data() + (block * SparseGrid::nodes_per_block + size_t(n)) * count;
@@ -111,17 +120,23 @@ template <class Box, int... S>
   column[3] = __builtin_shufflevector(odd01, odd23, 2, 3, 6, 7);
 }
 
-// Copies the halo's values: value c of node n of block nb is first_value(nb)[n · Stride + c];
-// zero in inactive blocks. Per axis the halo splits into three segments — `Reach` nodes of
-// the block below, the block's own `bw`, `Reach` of the block above — so it is 27 boxes,
-// each from one block; every box's loops have fixed counts (a template per box), and the
-// block's own 64 nodes are one of them. Where a box's rows along k are whole (its k segment is
-// the block's own), a node's values are read four at a time: the last group may read past
-// `Components`, within the node's `Stride` values.
-template <int Reach, int Components, int Stride, class FirstValue>
+// Copies the halo's values: value c of node n of block nb is
+// first_value(nb)[n · Stride + c · ComponentStride] — node by node (Stride ≥ Components,
+// ComponentStride 1: the grid's lanes) or component by component (Stride 1,
+// ComponentStride 64: DDMP's M); zero in inactive blocks. Per axis the halo splits into
+// three segments — `Reach` nodes of the block below, the block's own `bw`, `Reach` of the
+// block above — so it is 27 boxes, each from one block; every box's loops have fixed counts
+// (a template per box), and the block's own 64 nodes are one of them. Where a box's rows
+// along k are whole (its k segment is the block's own), a row is read four nodes at a time:
+// component by component one vector a component; node by node four values of each node at a
+// time, transposed (the last group may read past `Components`, within the node's `Stride`).
+template <int Reach, int Components, int Stride, int ComponentStride, class FirstValue>
 void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, BlockHalo<Reach, Components>& halo) {
   static_assert(Reach <= bw, "a halo reaches at most one block away");
-  static_assert((Components + 3) / 4 * 4 <= Stride, "a node's last group of four values lies within its stride");
+  constexpr bool by_component = Stride == 1;
+  static_assert(by_component ? ComponentStride >= SparseGrid::nodes_per_block
+                             : ComponentStride == 1 && (Components + 3) / 4 * 4 <= Stride,
+                "component by component, or a node's last group of four values within its stride");
   const auto box = [&](auto si, auto sj, auto sk) __attribute__((always_inline)) {
     // Per segment s (0 below, 1 own, 2 above): first local index in the block, count, first halo index.
     constexpr int first[3] = {bw - Reach, 0, 0}, count[3] = {Reach, bw, Reach}, start[3] = {0, Reach, Reach + bw};
@@ -136,7 +151,13 @@ void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, 
       return;
     }
     const Real* in = first_value(size_t(nb));
-    if constexpr (K == 1) {
+    if constexpr (K == 1 && by_component) {
+      for (int c = 0; c < Components; ++c)
+        for (int i = 0; i < count[I]; ++i)
+          for (int j = 0; j < count[J]; ++j)
+            num::store(&halo.v[c][start[I] + i][start[J] + j][start[K]],
+                       num::load<Axes>(in + c * ComponentStride + ((first[I] + i) * bw + (first[J] + j)) * bw));
+    } else if constexpr (K == 1) {
       // A whole row along k (4 nodes) at a time: its nodes' values four components at a time,
       // turned into four component rows (transpose_rows). These boxes hold two thirds of the
       // halo, and copied one value at a time they cost more than the smoothing passes
@@ -159,7 +180,7 @@ void load_halo(const DdmpNodalValues& nv, size_t block, FirstValue first_value, 
           for (int j = 0; j < count[J]; ++j)
             for (int k = 0; k < count[K]; ++k)
               halo.v[c][start[I] + i][start[J] + j][start[K] + k] =
-                  in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c];
+                  in[(((first[I] + i) * bw + (first[J] + j)) * bw + (first[K] + k)) * Stride + c * ComponentStride];
     }
   };
   for_each_halo_box(box, std::make_integer_sequence<int, 27>{});
@@ -262,7 +283,7 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     NodeHalo<6> s;
-    load_halo<1, 6, DdmpNodalValues::count>(nv, b, [&](size_t nb) { return nv.node(nb, 0); }, s);
+    load_halo<1, 6, 1, SparseGrid::nodes_per_block>(nv, b, [&](size_t nb) { return nv.stress_component(nb, 0); }, s);
     constexpr int w = bw + 2;
     // z: M_z of the 6 components, D_z of σxz, σyz, σzz (Voigt xx yy zz yz xz xy: 0 1 2 3 4 5).
     alignas(64) Real z[9][w][w][bw];
@@ -309,7 +330,7 @@ inline void ddmp_nodal_velocity_gradient(const SparseGrid& grid, int velocity_la
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
     if (nv.gradient_left_out(b)) return;
     NodeHalo<3> v;
-    load_halo<1, 3, lane::count>(nv, b, [&](size_t nb) { return grid.block(nb) + velocity_lane; }, v);
+    load_halo<1, 3, lane::count, 1>(nv, b, [&](size_t nb) { return grid.block(nb) + velocity_lane; }, v);
     constexpr int w = bw + 2;
     // z: M_z v, D'_z v.
     alignas(64) Real z[6][w][w][bw];
@@ -365,14 +386,33 @@ inline void clear_ddmp_box(const Bucket& b, const BucketColumns& columns, const 
   });
 }
 
-// Adds the box's 6 mapped stress values into the nodal values.
+// Adds the box's 6 mapped stress values (node by node in the buffer) into the nodal values
+// (component by component).
 inline void add_ddmp_box_to_grid(const Bucket& b, const BucketColumns& columns, const BlockTable& table,
                                  BucketBuffer& buffer, DdmpNodalValues& nv) {
+  using ddmp_grid_detail::transpose_rows;
+  constexpr int stride = DdmpNodalValues::count;
   for_each_ddmp_box_run(b, columns, table, buffer, [&](const Real* l, int block, int node, int count) {
     if (block < 0) return;
-    Real* g = nv.node(size_t(block), node);
-    for (int n = 0; n < count; ++n, g += DdmpNodalValues::count, l += DdmpNodalValues::count)
-      for (int c = 0; c < 6; ++c) g[c] += l[c];
+    if (count == 4) {
+      // A whole column of the block: four nodes' components 0–3 and 4–7 as vectors, turned
+      // into component rows (the last two of the second group are not M's and are dropped).
+      // Each value gets the same single addition as below.
+      Axes low[4], high[4];
+      transpose_rows(num::load<Axes>(l), num::load<Axes>(l + stride), num::load<Axes>(l + 2 * stride),
+                     num::load<Axes>(l + 3 * stride), low);
+      transpose_rows(num::load<Axes>(l + 4), num::load<Axes>(l + stride + 4), num::load<Axes>(l + 2 * stride + 4),
+                     num::load<Axes>(l + 3 * stride + 4), high);
+      for (int c = 0; c < 6; ++c) {
+        Real* g = nv.stress_component(size_t(block), c) + node;
+        num::store(g, num::load<Axes>(g) + (c < 4 ? low[c] : high[c - 4]));
+      }
+      return;
+    }
+    for (int c = 0; c < 6; ++c) {
+      Real* g = nv.stress_component(size_t(block), c) + node;
+      for (int n = 0; n < count; ++n) g[n] += l[n * stride + c];
+    }
   });
 }
 
