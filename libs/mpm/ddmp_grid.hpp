@@ -271,8 +271,16 @@ inline void fill_ddmp_alpha(const std::vector<Vec3>& positions, Real h, const Dd
 }
 inline DdmpAlphaCache ddmp_alpha_of_step(DdmpNodalValues& nv) { return {nv.alpha.data()}; }
 
-// Zeroes every node's values (before a scatter that maps the stress again).
-inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) { std::fill(nv.values.begin(), nv.values.end(), Real(0)); }
+// Zeroes every node's M (before a scatter that maps the stress again), block by block in
+// parallel. L is not cleared: the L pass writes it wherever it is read
+// (copy_ddmp_box_from_grid supplies the zeros of the blocks it leaves out).
+inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) {
+  const size_t blocks = nv.values.size() / (size_t(SparseGrid::nodes_per_block) * DdmpNodalValues::count);
+  tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+    Real* m = nv.stress_component(b, 0);
+    std::fill(m, m + 6 * SparseGrid::nodes_per_block, Real(0));
+  });
+}
 
 // f_i += Σ_j (M_j / h³) h² G(i − j) = Σ_j M_j G(i − j) / h over the 27 neighbours j, with
 // M_j the mapped −(1 − α) S V σ (Voigt order xx yy zz yz xz xy): the smoothed part of Eq.
