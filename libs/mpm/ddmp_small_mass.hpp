@@ -129,7 +129,7 @@ namespace ddmp_grid_detail {
 // Asks for all of a distribution's shares (its coefficients and steps, ≈ 8 lines): the
 // read-back asks for them a pair of nodes ahead (for_each_share_pair). The first two lines
 // come with the block (prefetch_distributions). perf side by side, both orders, against G2P
-// (unchanged): the read-back 13 % faster; the same in the hand-on made it 7 % slower (its
+// (unchanged): the read-back 10–13 % faster; the same in the hand-on made it 7 % slower (its
 // receivers' writes compete with the requests), so it is not used there (QUICK T2P30, 2026-11-29).
 inline void prefetch_shares(const DdmpDistribution& d) {
   const char* line = reinterpret_cast<const char*>(d.shares) + 64;
