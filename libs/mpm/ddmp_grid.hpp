@@ -41,7 +41,8 @@ struct DdmpDistribution;
 // hand on their lanes (bit n = node n), and per such node its distribution.
 struct DdmpNodalValues {
   static constexpr int count = BucketBuffer::ddmp_values;
-  NodeStorage values;  // laid out like the grid's lanes, and on large pages like them
+  static constexpr int stress_components = 6;  // of M (Voigt)
+  NodeStorage values;  // block by block, on large pages like the grid's lanes
   std::vector<const DdmpDistribution*> distributions;  // per node handing on: its shares (ddmp_small_mass.hpp)
   uint64_t distribution_generation = 0;                // of the memo the distributions point into
   std::vector<uint64_t> handing;                       // per block: the nodes that hand on
@@ -278,7 +279,7 @@ inline void clear_ddmp_nodal_values(DdmpNodalValues& nv) {
   const size_t blocks = nv.values.size() / (size_t(SparseGrid::nodes_per_block) * DdmpNodalValues::count);
   tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
     Real* m = nv.stress_component(b, 0);
-    std::fill(m, m + 6 * SparseGrid::nodes_per_block, Real(0));
+    std::fill(m, m + DdmpNodalValues::stress_components * SparseGrid::nodes_per_block, Real(0));
   });
 }
 
@@ -290,12 +291,14 @@ inline void add_ddmp_smoothed_force(SparseGrid& grid, const DdmpNodalValues& nv,
   using namespace ddmp_grid_detail;
   const Real inv_h = 1 / h;
   tbb::parallel_for(size_t(0), grid.block_count(), [&](size_t b) {
-    NodeHalo<6> s;
-    load_halo<1, 6, 1, SparseGrid::nodes_per_block>(nv, b, [&](size_t nb) { return nv.stress_component(nb, 0); }, s);
+    constexpr int components = DdmpNodalValues::stress_components;
+    NodeHalo<components> s;
+    load_halo<1, components, 1, SparseGrid::nodes_per_block>(nv, b, [&](size_t nb) { return nv.stress_component(nb, 0); },
+                                                             s);
     constexpr int w = bw + 2;
     // z: M_z of the 6 components, D_z of σxz, σyz, σzz (Voigt xx yy zz yz xz xy: 0 1 2 3 4 5).
     alignas(64) Real z[9][w][w][bw];
-    for (int q = 0; q < 6; ++q) mass_along<2, w, w, bw>(s.v[q], z[q]);
+    for (int q = 0; q < components; ++q) mass_along<2, w, w, bw>(s.v[q], z[q]);
     slope_along<2, w, w, bw>(s.v[4], z[6]);
     slope_along<2, w, w, bw>(s.v[3], z[7]);
     slope_along<2, w, w, bw>(s.v[2], z[8]);
@@ -411,13 +414,13 @@ inline void add_ddmp_box_to_grid(const Bucket& b, const BucketColumns& columns, 
                      num::load<Axes>(l + 3 * stride), low);
       transpose_rows(num::load<Axes>(l + 4), num::load<Axes>(l + stride + 4), num::load<Axes>(l + 2 * stride + 4),
                      num::load<Axes>(l + 3 * stride + 4), high);
-      for (int c = 0; c < 6; ++c) {
+      for (int c = 0; c < DdmpNodalValues::stress_components; ++c) {
         Real* g = nv.stress_component(size_t(block), c) + node;
         num::store(g, num::load<Axes>(g) + (c < 4 ? low[c] : high[c - 4]));
       }
       return;
     }
-    for (int c = 0; c < 6; ++c) {
+    for (int c = 0; c < DdmpNodalValues::stress_components; ++c) {
       Real* g = nv.stress_component(size_t(block), c) + node;
       for (int n = 0; n < count; ++n) g[n] += l[n * stride + c];
     }

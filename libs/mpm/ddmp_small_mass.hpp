@@ -126,13 +126,16 @@ struct DdmpDistribution {
 
 namespace ddmp_grid_detail {
 
-// Asks for all of a distribution's shares (its coefficients and steps, ≈ 8 lines): the
-// read-back asks for them a pair of nodes ahead (for_each_share_pair). The first two lines
-// come with the block (prefetch_distributions). perf side by side, both orders, against G2P
-// (unchanged): the read-back 10–13 % faster; the same in the hand-on made it 7 % slower (its
-// receivers' writes compete with the requests), so it is not used there (QUICK T2P30, 2026-11-29).
+// The first lines of a distribution (its header and first coefficients), which
+// prefetch_distributions asks for with its block.
+inline constexpr int block_prefetched_lines = 2;
+// Asks for the rest of a distribution's shares (its coefficients and steps, ≈ 8 lines in all):
+// the read-back asks for them a pair of nodes ahead (for_each_share_pair). perf side by side,
+// both orders, against G2P (unchanged): the read-back 10–13 % faster; the same in the hand-on
+// made it 7 % slower (its receivers' writes compete with the requests), so it is not used
+// there (QUICK T2P30, 2026-11-29).
 inline void prefetch_shares(const DdmpDistribution& d) {
-  const char* line = reinterpret_cast<const char*>(d.shares) + 64;
+  const char* line = reinterpret_cast<const char*>(&d) + 64 * block_prefetched_lines;
   const char* end = reinterpret_cast<const char*>(d.steps + d.count);
   for (; line < end; line += 64) __builtin_prefetch(line);
 }
@@ -461,8 +464,8 @@ inline void prefetch_distributions(const DdmpNodalValues& nv, size_t b, uint64_t
   const DdmpDistribution* const* distribution = nv.distributions.data() + b * SparseGrid::nodes_per_block;
   for_each_bit(mask, [&](int n) {
     if (!distribution[n]) return;
-    __builtin_prefetch(distribution[n]);
-    __builtin_prefetch(reinterpret_cast<const char*>(distribution[n]) + 64);
+    for (int line = 0; line < block_prefetched_lines; ++line)
+      __builtin_prefetch(reinterpret_cast<const char*>(distribution[n]) + 64 * line);
   });
 }
 // Blocks in tiles of 3×3×3: a block's tile, its colour among the tiles (the parity of the
