@@ -54,7 +54,7 @@ struct DdmpNodalValues {
     uint64_t layout = 0, generation = 0;        // of the grid's blocks and of the memo; 0: nothing to reuse
     Real small_mass = 0;                        // the threshold it used
     std::vector<uint64_t> candidates, handing;  // per block: the nodes that may hand on, and those that do
-    std::vector<uint8_t> changed;               // per block, this step: its masks are not the last find's
+    std::vector<uint64_t> changed;              // per block, this step: its nodes whose masks are not the last find's
   } last_find;
   // mass_mask is this step's: find_ddmp_small_mass_nodes ran after the step's grid was
   // prepared (the mass mapped by its scatter, before any node handed its mass on).

@@ -353,9 +353,8 @@ size_t Simulation::grid_memory_bytes() const {
   return state_.grid.memory_bytes() + d.values.capacity() * sizeof(Real) +
          d.neighbours.capacity() * sizeof(d.neighbours[0]) + d.distributions.capacity() * sizeof(d.distributions[0]) +
          (d.handing.capacity() + d.sizeable_mask.capacity() + d.mass_mask.capacity() +
-          d.last_find.candidates.capacity() + d.last_find.handing.capacity()) *
-             sizeof(uint64_t) +
-         d.last_find.changed.capacity();
+          d.last_find.candidates.capacity() + d.last_find.handing.capacity() + d.last_find.changed.capacity()) *
+             sizeof(uint64_t);
 }
 
 size_t Simulation::particle_memory_bytes() const { return mpm::particle_memory_bytes(state_.particles); }

@@ -169,4 +169,6 @@ std::vector<SimulationTestAccess::GridNode> SimulationTestAccess::grid_nodes(con
   return out;
 }
 
+void SimulationTestAccess::forget_last_ddmp_find(Simulation& sim) { sim.context_->ddmp_nodal.last_find.layout = 0; }
+
 }  // namespace latmpm::mpm

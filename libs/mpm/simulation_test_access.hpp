@@ -42,6 +42,9 @@ class SimulationTestAccess {
   static Gathered gather_from_grid(const Simulation& sim);
   // Every node of the active grid, block by block.
   static std::vector<GridNode> grid_nodes(const Simulation& sim);
+  // Makes the next step's DDMP find start from scratch (find_ddmp_small_mass_nodes keeps the
+  // last find's decisions where the masks around them did not change).
+  static void forget_last_ddmp_find(Simulation& sim);
 };
 
 }  // namespace latmpm::mpm
