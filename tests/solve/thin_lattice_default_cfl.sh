@@ -5,7 +5,9 @@
 # checks stopping them. At the defaults before 2026-11-27 (uGIMP 0.5, cpGIMP 0.6, bspline2
 # 0.7, bspline3 0.9, DDMP 0.5) every one of these runs stopped within 450 steps: a local
 # burst of kinetic energy, drained by the transfer, left the energy balance off by ten times
-# the work put in (docs/tradeoff.md, "Time step").
+# the work put in (docs/tradeoff.md, "Time step"). DDMP's default cfl 0.4 rests on its
+# small-mass fraction 0.015: with 0.01 (the default until 2026-11-29) T1P40 stops at step 399
+# (docs/tradeoff.md, "DDMP's small-mass threshold sets its step").
 # usage: thin_lattice_default_cfl.sh BIN_DIR SOURCE_DIR
 set -euo pipefail
 bin=$1 src=$2
