@@ -59,13 +59,11 @@ struct Settings {
   bool ddmp_subpoints = false;
   // DDMP: a node with less mass than this fraction of ρ h³ (ρ the smallest density of a
   // deformable body) hands its mass, momentum and force on to its neighbours and reads its
-  // velocity back from them (ddmp_grid.hpp, distribution coefficients). The fraction also
-  // sets DDMP's stable step: a node just above it takes smoothed force from a whole cell's
-  // stress on its own small mass, so a larger fraction lets a larger cfl run (thin-strut
-  // lattices stopped at cfl 0.4 with 0.01, 0.5 with 0.015, 0.6 with 0.03). 0.015 with
-  // DDMP's default cfl 0.4 (mpm/names.cpp): the step of uGIMP, the load within 2.6 % of
-  // 0.01 at cfl 0.3 on paper A's thinnest struts (docs/tradeoff.md, "DDMP's small-mass
-  // threshold sets its step"; 0.01 until 2026-11-29).
+  // velocity back from them (ddmp_grid.hpp, distribution coefficients). It also sets DDMP's
+  // stable step: a node just above it takes smoothed force from a whole cell's stress on its
+  // own small mass. DDMP's default cfl (default_cfl, mpm/names.cpp) is measured with this
+  // value; a smaller fraction needs a smaller cfl (docs/tradeoff.md, "DDMP's small-mass
+  // threshold sets its step"; 0.01 with cfl 0.3 until 2026-11-29).
   Real ddmp_small_mass_fraction = 0.015;  // in [0, 1)
   // DDMP: the stabilization of the smoothed gradient's null space (ddmp_stabilization.hpp),
   // β times the body's elastic moduli on the difference between the plain linear-MPM
