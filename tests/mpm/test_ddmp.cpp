@@ -6,6 +6,7 @@
 // (Eq. 8 next to free surfaces, through the solver's passes: test_ddmp_grid.cpp.)
 #include <catch2/catch.hpp>
 
+#include <iomanip>
 #include <random>
 #include <vector>
 
@@ -160,6 +161,34 @@ TEST_CASE("DDMP's default partition function is Eq. 5 as printed, continuous acr
   // Continuous across a face: the same value (0) from both cells' sides.
   CHECK(ddmp_partition(Vec3(1 - 1e-15, 0.4, 0.6)) < 1e-4);
   CHECK(ddmp_partition(Vec3(1e-15, 0.4, 0.6)) < 1e-4);
+}
+
+TEST_CASE("DDMP's partition function: α of many points at once is the per-point one", "[mpm][ddmp]") {
+  // The solver's pass (ddmp_partition_of_points: vectorised log and exp, rounds of 512 points)
+  // against ddmp_partition (std::pow) at points anywhere in space, negative coordinates, on
+  // cell faces (α = 0) and a count that is not a whole number of rounds.
+  const DdmpPartition alpha = GENERATE(DdmpPartition{}, DdmpPartition{1, 0.125});
+  const Real h = 0.64e-3;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<Real> u(-40 * h, 40 * h);
+  std::vector<Vec3> x(1237);
+  for (Vec3& p : x) p = Vec3(u(rng), u(rng), u(rng));
+  x[5] = Vec3(3 * h, u(rng), u(rng));      // on a face: α = 0
+  x[700] = Vec3(-7 * h, -2 * h, -5 * h);  // on a corner
+  std::vector<Real> a(x.size(), -1);
+  ddmp_partition_of_points(x.data(), x.size(), 1 / h, alpha, a.data());
+  int zeros = 0;
+  for (size_t p = 0; p < x.size(); ++p) {
+    Vec3 f;
+    for (int k = 0; k < 3; ++k) f[k] = x[p][k] * (1 / h) - std::floor(x[p][k] * (1 / h));  // as the solver: x · h⁻¹
+    const Real expected = ddmp_partition(f, alpha);
+    INFO("point " << p << ": " << std::setprecision(17) << a[p] << " against " << expected);
+    CHECK(std::abs(a[p] - expected) <= 1e-13 * alpha.peak);
+    zeros += a[p] == 0;
+  }
+  CHECK(a[5] == 0);
+  CHECK(a[700] == 0);
+  CHECK(zeros == 2);
 }
 
 // DDMP with sub-points (shape_ddmp_subpoints.hpp): the point's α part and corner weights,
