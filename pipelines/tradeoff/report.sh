@@ -33,7 +33,12 @@ while IFS=: read -r family name; do
     # A numerical failure: no errors, the step and the reason in short.
     errors=",,,,"
     change=""
-    ended="failed at $(status reason "$run" | sed -n 's/^numerical failure: \(step [0-9]*\).*(\(J = [^)]*\)).*/\1; \2/p')"
+    # "numerical failure: step N (t = …): what, …; the fastest particle …" → "step N: what"
+    # (no comma: a field of the CSV below).
+    reason=$(status reason "$run")
+    short=$(sed -n 's/^numerical failure: \(step [0-9]*\) ([^)]*): \([^;,]*\).*/\1: \2/p' <<< "$reason")
+    reason=${reason//,/;}
+    ended="failed at ${short:-$reason}"
   else
     # latmpm-post's comparison.csv against the reference; the change against the base case
     # isolates the knob from the base's own error.
