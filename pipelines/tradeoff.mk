@@ -8,7 +8,8 @@
 #   the column against the Euler load. Results in results/tradeoff/: summary.md (table,
 #   Pareto plot pareto.png/svg, recommendations live in docs/tradeoff.md), errors.csv, and
 #   latmpm-post's plots of each family in column/ and lattice/.
-# Run with `make -j2 tradeoff` (about 25 min of CPU; see docs/tradeoff.md).
+# Run with `make -j2 tradeoff` (about 15 min of CPU on the Zen 4 of docs/benchmarks.md, 2026-11-29;
+#   25 on the machine of 2026-11-21; see docs/tradeoff.md).
 include pipelines/common.mk
 
 TO_SRC := pipelines/tradeoff
