@@ -120,6 +120,7 @@ inline void ddmp_partition_of_points(const Vec3* x, size_t n, Real inv_h, const 
   using Array = Eigen::Array<Real, Eigen::Dynamic, 1>;
   constexpr size_t piece = 512;  // points a round: their factors and α stay in L1
   alignas(64) Real factor[3 * piece];
+  alignas(64) Real smooth_part[piece];
   for (size_t first = 0; first < n; first += piece) {
     const size_t count = std::min(piece, n - first);
     const Eigen::Map<const Array> coordinates(x[first].data(), Eigen::Index(3 * count));
@@ -131,7 +132,7 @@ inline void ddmp_partition_of_points(const Vec3* x, size_t n, Real inv_h, const 
     for (size_t p = 0; p < count; ++p) out[Eigen::Index(p)] = factor[3 * p] * factor[3 * p + 1] * factor[3 * p + 2];
     // The log and exp as an array expression of its own, which Eigen vectorises (inside
     // select() it evaluated them coefficient by coefficient through libm: 4 % of a DDMP step).
-    Eigen::Map<Array> smooth(factor, Eigen::Index(count));
+    Eigen::Map<Array> smooth(smooth_part, Eigen::Index(count));
     smooth = partition.peak * (partition.exponent * out.log()).exp();
     out = (out > 0).select(smooth, Real(0));
   }
