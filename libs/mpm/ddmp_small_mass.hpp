@@ -57,7 +57,8 @@ constexpr int own_mass_bit = box_bit(0, 0, 0);
 // particle's cell sees sizeable nodes even where a particle has just entered a new cell.
 struct Offset {
   int x, y, z;
-  Real weight;  // 2^(−|d|₁)
+  Real weight;   // 2^(−|d|₁)
+  bool nearest;  // |d|₁ ≤ 2 (Receivers::nearest)
 };
 constexpr int offset_count = 124;
 inline const std::array<Offset, offset_count>& neighbour_offsets() {
@@ -68,7 +69,7 @@ inline const std::array<Offset, offset_count>& neighbour_offsets() {
       for (int y = -reach; y <= reach; ++y)
         for (int z = -reach; z <= reach; ++z) {
           const int l1 = std::abs(x) + std::abs(y) + std::abs(z);
-          if (l1 > 0) out[n++] = {x, y, z, offset_weight(x, y, z)};
+          if (l1 > 0) out[n++] = {x, y, z, offset_weight(x, y, z), l1 <= 2};
         }
     return out;
   }();
@@ -189,8 +190,8 @@ template <class Fn>
 
 // The read-back's sums Σ_i C_li node_i of the block's nodes in `mask`, two nodes at a time,
 // their shares interleaved: add(sum, receiver, C) adds one share to a node's sum, and
-// done(n, sum) takes node n's sum. Each sum is one chain of multiply-adds (≈ 50 shares, 4
-// cycles each), and one node at a time left the core waiting on that chain: perf put the
+// done(n, sum) takes node n's sum. Each sum is one chain of multiply-adds (then ≈ 50 shares,
+// now ≈ 14; 4 cycles each), and one node at a time left the core waiting on that chain: perf put the
 // read-back's samples on the multiply-add and the next share's load (T2P20-E8, 2026-11-28).
 // Two chains overlap; each node's sum still adds its shares in their order from zero, so the
 // bits are those of one node at a time.
@@ -242,14 +243,37 @@ inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w)
   return w * (c[0] + c[1] * x + c[2] * y + c[3] * z);
 }
 
-// (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours (zero:
-// none, the node does not hand on); the weighted mean where they do not span 3D or where a
-// node with mass would give a neighbour a negative share (find_ddmp_small_mass_nodes).
-inline Fit fit_distribution(const NeighbourPattern& pattern) {
+// Which sizeable neighbours a small-mass node hands on to: the nearest — the 24 offsets with
+// |d|₁ ≤ 2 (the 6 face neighbours, the 12 edge neighbours, the 6 two cells away along an
+// axis) — where they span 3D, else all 124 within two cells per axis. A node one cell
+// outside a flat face then hands on to 6 nodes (the two layers below it along the normal
+// and the four beside the first) instead of ≈ 50; outside a corner or a thin edge, where
+// the nearest are coplanar or absent, to the wider set as before. Both fits are exact for
+// linear fields. Why: at the paper's resolution a thin-strut lattice has more nodes handing
+// on than nodes with mass (T2P30: 170,674 against 162,599), and with all 124 they held 32.5
+// shares each, 5.5 million a pass; the nearest cut that to 2.3 million and DDMP's step on the
+// whole T2P30 by 7 % (docs/benchmarks.md, "DDMP on the whole paper-resolution T2P30").
+// (Session 31 tried the 26 within one cell, else a 5×3×3 slab along one axis: with those
+// the DDMP column of test_mpm "[buckling][ddmp]" blew up; with these it passes. docs/solver.md.)
+enum class Receivers : uint8_t { nearest, within_two_cells };
+inline bool receives(const Offset& d, Receivers receivers) {
+  return receivers == Receivers::within_two_cells || d.nearest;
+}
+struct DistributionFit {
+  Fit coefficients{};  // (c₀, c); zero: the node does not hand on
+  Receivers receivers = Receivers::nearest;
+};
+
+// (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours among
+// `receivers` (zero: none); the weighted mean where they do not span 3D (then `spans` is
+// false) or where a node with mass would give a neighbour a negative share
+// (find_ddmp_small_mass_nodes).
+inline Fit fit_over(const NeighbourPattern& pattern, Receivers receivers, bool& spans) {
   const auto& offsets = neighbour_offsets();
+  spans = false;
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   for (const Offset& d : offsets) {
-    if (!pattern.sizeable(d)) continue;
+    if (!pattern.sizeable(d) || !receives(d, receivers)) continue;
     const Eigen::Vector4d basis(1, d.x, d.y, d.z);
     A.noalias() += d.weight * basis * basis.transpose();
   }
@@ -257,16 +281,24 @@ inline Fit fit_distribution(const NeighbourPattern& pattern) {
   const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
   const Eigen::Vector4d diagonal = ldlt.vectorD();
   Eigen::Vector4d fit = Eigen::Vector4d::Zero();
-  if (ldlt.info() == Eigen::Success && diagonal.minCoeff() > 1e-6 * diagonal.maxCoeff())
-    fit = ldlt.solve(Eigen::Vector4d(1, 0, 0, 0));
+  spans = ldlt.info() == Eigen::Success && diagonal.minCoeff() > 1e-6 * diagonal.maxCoeff();
+  if (spans) fit = ldlt.solve(Eigen::Vector4d(1, 0, 0, 0));
   // A node with mass hands it on too: a negative C_li could leave a receiver with none.
   // Such a node takes the weighted mean (a node outside the material has none).
   bool negative = false;
   if (pattern.has(own_mass_bit) && fit[0] != 0)
     for (const Offset& d : offsets)
-      if (pattern.sizeable(d)) negative |= distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight) < 0;
+      if (pattern.sizeable(d) && receives(d, receivers))
+        negative |= distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight) < 0;
   if (fit[0] == 0 || negative) fit = Eigen::Vector4d(1 / A(0, 0), 0, 0, 0);
   return {fit[0], fit[1], fit[2], fit[3]};
+}
+// The fit over the nearest receivers where they span 3D, else over all within two cells.
+inline DistributionFit fit_distribution(const NeighbourPattern& pattern) {
+  bool spans = false;
+  const Fit nearest = fit_over(pattern, Receivers::nearest, spans);
+  if (spans) return {nearest, Receivers::nearest};
+  return {fit_over(pattern, Receivers::within_two_cells, spans), Receivers::within_two_cells};
 }
 
 // Where the memo's distributions live: chunks of 4 MB on large pages (core/large_pages.hpp),
@@ -313,11 +345,12 @@ inline DistributionArena& distribution_arena() {
 // A distribution and its shares in one allocation: the header, the coefficients, the steps.
 class DistributionStorage {
  public:
-  DistributionStorage(const NeighbourPattern& pattern, const Fit& fit) {
+  DistributionStorage(const NeighbourPattern& pattern, const DistributionFit& fit) {
     const auto& offsets = neighbour_offsets();
+    const auto receiving = [&](const Offset& d) { return pattern.sizeable(d) && receives(d, fit.receivers); };
     uint32_t count = 0;
-    if (fit[0] != 0)
-      for (const Offset& d : offsets) count += pattern.sizeable(d);
+    if (fit.coefficients[0] != 0)
+      for (const Offset& d : offsets) count += receiving(d);
     bytes_ = static_cast<std::byte*>(
         distribution_arena().take(sizeof(DdmpDistribution) + count * (sizeof(Real) + sizeof(int16_t))));
     auto* shares = reinterpret_cast<Real*>(bytes_ + sizeof(DdmpDistribution));
@@ -325,8 +358,8 @@ class DistributionStorage {
     uint32_t s = 0;
     if (count)
       for (const Offset& d : offsets)
-        if (pattern.sizeable(d)) {
-          shares[s] = distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight);
+        if (receiving(d)) {
+          shares[s] = distribution_coefficient(fit.coefficients.data(), d.x, d.y, d.z, d.weight);
           steps[s++] = box_index_step(d.x, d.y, d.z);
         }
     distribution_ = new (bytes_) DdmpDistribution{pattern, shares, steps, count};
@@ -356,9 +389,9 @@ inline DistributionMemo& distribution_memo() {
 // them by its end (2026-11-27). Past this many entries the memo is emptied between steps
 // (find_ddmp_small_mass_nodes, before any pointer into it is taken). A step's own patterns
 // must fit, or every step refits them all: the paper-size T2P30 lattice starts with ≈ 54,000
-// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.6 kB a pattern
-// (≈ 50 shares of 10 B, the header, the map's node) the limit is ≈ 80 MB, 1.4 kB at most
-// (124 shares).
+// (2026-11-27; with a limit of 2^14 its fits were 17 % of the step). At ≈ 0.3 kB a pattern
+// (≈ 14 shares of 10 B, the header with its pattern, the map's node) the limit is ≈ 40 MB,
+// 1.4 kB a pattern at most (124 shares).
 // One memo for the process: Simulations step one at a time.
 inline constexpr size_t distribution_memo_limit = size_t(1) << 17;
 

@@ -300,3 +300,81 @@ TEST_CASE("DDMP's find reusing the last step's decisions equals a find from scra
   for (size_t p = 0; p < start.size(); ++p) moved = std::max(moved, Real((a->particles().position[p] - start[p]).norm()));
   CHECK(moved > h);
 }
+
+// A small-mass node's distribution (ddmp_small_mass.hpp, fit_distribution) reads constant and
+// linear fields back exactly — Σ_i C_li = 1, Σ_i C_li d_i = 0 — from its nearest sizeable
+// neighbours (|d|₁ ≤ 2) where they span 3D, and from all 124 within two cells only where they
+// do not. Checked on a node inside the material, one outside a flat face, one outside a
+// corner, and 2,000 random neighbourhoods, against those definitions.
+TEST_CASE("DDMP's distributions are exact for linear fields over the nearest neighbours that span them",
+          "[mpm][ddmp]") {
+  using namespace latmpm::mpm::ddmp_grid_detail;
+  const auto& offsets = neighbour_offsets();
+  const auto check = [&](const NeighbourPattern& pattern) {
+    const DistributionFit fit = fit_distribution(pattern);
+    const DdmpDistribution& d = DistributionStorage(pattern, fit).distribution();
+    uint32_t sizeable = 0;
+    for (const Offset& o : offsets) sizeable += pattern.sizeable(o);
+    REQUIRE((d.count == 0) == (sizeable == 0));
+    if (d.count == 0) return fit;
+    Real sum = 0;
+    Vec3 first = Vec3::Zero();
+    uint32_t s = 0;
+    for (const Offset& o : offsets)
+      if (pattern.sizeable(o) && (fit.receivers == Receivers::within_two_cells || std::abs(o.x) + std::abs(o.y) + std::abs(o.z) <= 2)) {
+        REQUIRE(s < d.count);
+        REQUIRE(d.steps[s] == box_index_step(o.x, o.y, o.z));
+        sum += d.shares[s];
+        first += d.shares[s] * Vec3(o.x, o.y, o.z);
+        ++s;
+      }
+    CHECK(s == d.count);
+    CHECK(sum == Approx(1).epsilon(1e-12));
+    bool nearest_span = false, all_span = false;
+    fit_over(pattern, Receivers::nearest, nearest_span);
+    fit_over(pattern, Receivers::within_two_cells, all_span);
+    // The nearest wherever they span; linear exactness wherever the receivers span (a node
+    // with mass of its own may instead take the weighted mean, never a negative share).
+    CHECK((fit.receivers == Receivers::nearest) == nearest_span);
+    const bool mean = fit.coefficients[1] == 0 && fit.coefficients[2] == 0 && fit.coefficients[3] == 0;
+    if (pattern.has(own_mass_bit) && mean)
+      for (uint32_t q = 0; q < d.count; ++q) CHECK(d.shares[q] > 0);
+    else if (all_span)
+      CHECK(first.norm() < 1e-12);
+    return fit;
+  };
+  // Inside the material: every neighbour sizeable — the 24 nearest.
+  NeighbourPattern inside;
+  for (const Offset& o : offsets) inside.set(box_bit(o.x, o.y, o.z));
+  inside.set(own_mass_bit);
+  CHECK(check(inside).receivers == Receivers::nearest);
+  CHECK(DistributionStorage(inside, fit_distribution(inside)).distribution().count == 24);
+  // One cell above a flat face z = 0 (sizeable at dz = −1, −2): the two layers below along the
+  // normal and the four beside the first, 6 receivers instead of the 50 sizeable within two cells.
+  NeighbourPattern face;
+  for (const Offset& o : offsets)
+    if (o.z < 0) face.set(box_bit(o.x, o.y, o.z));
+  CHECK(check(face).receivers == Receivers::nearest);
+  CHECK(DistributionStorage(face, fit_distribution(face)).distribution().count == 6);
+  // Outside a corner (sizeable where x, y, z < 0): none within |d|₁ ≤ 2, so all within two cells.
+  NeighbourPattern corner;
+  for (const Offset& o : offsets)
+    if (o.x < 0 && o.y < 0 && o.z < 0) corner.set(box_bit(o.x, o.y, o.z));
+  CHECK(check(corner).receivers == Receivers::within_two_cells);
+  CHECK(DistributionStorage(corner, fit_distribution(corner)).distribution().count == 8);
+  // Random neighbourhoods, sparse to dense, with and without mass of their own.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<Real> u(0, 1);
+  size_t nearest = 0, wide = 0;
+  for (int t = 0; t < 2000; ++t) {
+    NeighbourPattern p;
+    const Real density = u(rng);
+    for (const Offset& o : offsets)
+      if (u(rng) < density) p.set(box_bit(o.x, o.y, o.z));
+    if (u(rng) < 0.5) p.set(own_mass_bit);
+    (check(p).receivers == Receivers::nearest ? nearest : wide) += 1;
+  }
+  INFO(nearest << " nearest, " << wide << " within two cells");
+  CHECK(nearest > 0);
+  CHECK(wide > 0);
+}
