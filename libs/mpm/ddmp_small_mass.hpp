@@ -252,7 +252,7 @@ inline Real distribution_coefficient(const Real* c, int x, int y, int z, Real w)
 // linear fields. Why: at the paper's resolution a thin-strut lattice has more nodes handing
 // on than nodes with mass (T2P30: 170,674 against 162,599), and with all 124 they held 32.5
 // shares each, 5.5 million a pass; the nearest cut that to 2.3 million and DDMP's step on the
-// whole T2P30 by 7 % (docs/benchmarks.md, "DDMP on the whole paper-resolution T2P30").
+// whole T2P30 by 9 % (docs/benchmarks.md, "DDMP on the whole paper-resolution T2P30").
 // (Session 31 tried the 26 within one cell, else a 5×3×3 slab along one axis: with those
 // the DDMP column of test_mpm "[buckling][ddmp]" blew up; with these it passes. docs/solver.md.)
 enum class Receivers : uint8_t { nearest, within_two_cells };
