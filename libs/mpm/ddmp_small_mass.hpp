@@ -190,9 +190,10 @@ template <class Fn>
 
 // The read-back's sums Σ_i C_li node_i of the block's nodes in `mask`, two nodes at a time,
 // their shares interleaved: add(sum, receiver, C) adds one share to a node's sum, and
-// done(n, sum) takes node n's sum. Each sum is one chain of multiply-adds (then ≈ 50 shares,
-// now ≈ 14; 4 cycles each), and one node at a time left the core waiting on that chain: perf put the
-// read-back's samples on the multiply-add and the next share's load (T2P20-E8, 2026-11-28).
+// done(n, sum) takes node n's sum. Each sum is one chain of multiply-adds (≈ 50 shares with
+// all 124 receivers, ≈ 14 with the nearest; 4 cycles each), and one node at a time left the
+// core waiting on that chain: perf put the read-back's samples on the multiply-add and the
+// next share's load (T2P20-E8, 2026-11-28, with all 124).
 // Two chains overlap; each node's sum still adds its shares in their order from zero, so the
 // bits are those of one node at a time.
 template <class Add, class Done>

@@ -317,11 +317,16 @@ TEST_CASE("DDMP's distributions are exact for linear fields over the nearest nei
     for (const Offset& o : offsets) sizeable += pattern.sizeable(o);
     REQUIRE((d.count == 0) == (sizeable == 0));
     if (d.count == 0) return fit;
+    // The receivers by their definition: sizeable, and |d|₁ ≤ 2 unless the fit is the wide one.
+    const auto receiver = [&](const Offset& o) {
+      const bool nearest = std::abs(o.x) + std::abs(o.y) + std::abs(o.z) <= 2;
+      return pattern.sizeable(o) && (nearest || fit.receivers == Receivers::within_two_cells);
+    };
     Real sum = 0;
     Vec3 first = Vec3::Zero();
     uint32_t s = 0;
     for (const Offset& o : offsets)
-      if (pattern.sizeable(o) && (fit.receivers == Receivers::within_two_cells || std::abs(o.x) + std::abs(o.y) + std::abs(o.z) <= 2)) {
+      if (receiver(o)) {
         REQUIRE(s < d.count);
         REQUIRE(d.steps[s] == box_index_step(o.x, o.y, o.z));
         sum += d.shares[s];
