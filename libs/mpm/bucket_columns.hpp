@@ -17,6 +17,7 @@
 #include <cstdint>
 
 #include "mpm/particle_buckets.hpp"
+#include "mpm/sparse_grid.hpp"
 
 namespace latmpm::mpm {
 
@@ -79,6 +80,39 @@ BucketColumns stencil_columns(const BucketColumns& cells) {
     if (nodes.lo[x] <= nodes.hi[x])
       nodes.lo[x] = int8_t(std::max(nodes.lo[x] + below, 0)), nodes.hi[x] = int8_t(std::min(nodes.hi[x] + above, C::width - 1));
   return nodes;
+}
+
+// Adds the keys of the grid blocks that hold a node of the bucket's node columns (its k-ranges,
+// as stencil_columns gives them) or one within `Halo` nodes of such a node. Not the blocks of the bucket's box:
+// thin struts cross a box diagonally, and in T2P30 at the paper's cell the box's blocks are
+// ≈ 1.3 times those the columns reach; every whole-grid pass (the node update, DDMP's
+// smoothing and small-mass passes, the clears) runs over them. A node that no stencil reaches
+// holds zeros and is read by no point, so leaving its block out changes no value.
+template <int Halo>
+void add_column_blocks(const Bucket& b, const BucketColumns& columns, std::vector<uint64_t>& keys) {
+  constexpr int bw = SparseGrid::block_width, w = BucketColumns::width;
+  // The blocks the buffer and its halo can touch, as a mask: 14 + 2 halo nodes span 5 blocks.
+  constexpr int span = (w + 2 * Halo + bw - 1) / bw + 1;
+  int origin[3], first[3];
+  for (int a = 0; a < 3; ++a) {
+    origin[a] = BucketColumns::first_node(b, a);
+    first[a] = floor_div(origin[a] - Halo, bw);
+  }
+  std::array<bool, span * span * span> used{};
+  for (int i = 0; i < w; ++i)
+    for (int j = 0; j < w; ++j) {
+      const size_t column = BucketColumns::index(i, j);
+      if (columns.lo[column] > columns.hi[column]) continue;
+      const int k_lo = floor_div(origin[2] + columns.lo[column] - Halo, bw) - first[2];
+      const int k_hi = floor_div(origin[2] + columns.hi[column] + Halo, bw) - first[2];
+      for (int bi = floor_div(origin[0] + i - Halo, bw); bi <= floor_div(origin[0] + i + Halo, bw); ++bi)
+        for (int bj = floor_div(origin[1] + j - Halo, bw); bj <= floor_div(origin[1] + j + Halo, bw); ++bj)
+          for (int bk = k_lo; bk <= k_hi; ++bk) used[size_t(((bi - first[0]) * span + (bj - first[1])) * span + bk)] = true;
+    }
+  for (int i = 0; i < span; ++i)
+    for (int j = 0; j < span; ++j)
+      for (int k = 0; k < span; ++k)
+        if (used[size_t((i * span + j) * span + k)]) keys.push_back(SparseGrid::block_key(first[0] + i, first[1] + j, first[2] + k));
 }
 
 }  // namespace latmpm::mpm

@@ -263,26 +263,25 @@ inline bool receives(const Offset& d, Receivers receivers) {
 struct DistributionFit {
   Fit coefficients{};  // (c₀, c); zero: the node does not hand on
   Receivers receivers = Receivers::nearest;
+  bool spans = false;  // the receivers span 3D (else the coefficients are their weighted mean)
 };
 
 // (c₀, c) of the weighted least-squares fit over the pattern's sizeable neighbours among
-// `receivers` (zero: none); the weighted mean where they do not span 3D (then `spans` is
-// false) or where a node with mass would give a neighbour a negative share
-// (find_ddmp_small_mass_nodes).
-inline Fit fit_over(const NeighbourPattern& pattern, Receivers receivers, bool& spans) {
+// `receivers` (zero: none); the weighted mean where they do not span 3D or where a node with
+// mass would give a neighbour a negative share (find_ddmp_small_mass_nodes).
+inline DistributionFit fit_over(const NeighbourPattern& pattern, Receivers receivers) {
   const auto& offsets = neighbour_offsets();
-  spans = false;
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   for (const Offset& d : offsets) {
     if (!pattern.sizeable(d) || !receives(d, receivers)) continue;
     const Eigen::Vector4d basis(1, d.x, d.y, d.z);
     A.noalias() += d.weight * basis * basis.transpose();
   }
-  if (!(A(0, 0) > 0)) return {0, 0, 0, 0};
+  if (!(A(0, 0) > 0)) return {{0, 0, 0, 0}, receivers, false};
   const Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
   const Eigen::Vector4d diagonal = ldlt.vectorD();
   Eigen::Vector4d fit = Eigen::Vector4d::Zero();
-  spans = ldlt.info() == Eigen::Success && diagonal.minCoeff() > 1e-6 * diagonal.maxCoeff();
+  const bool spans = ldlt.info() == Eigen::Success && diagonal.minCoeff() > 1e-6 * diagonal.maxCoeff();
   if (spans) fit = ldlt.solve(Eigen::Vector4d(1, 0, 0, 0));
   // A node with mass hands it on too: a negative C_li could leave a receiver with none.
   // Such a node takes the weighted mean (a node outside the material has none).
@@ -292,14 +291,12 @@ inline Fit fit_over(const NeighbourPattern& pattern, Receivers receivers, bool& 
       if (pattern.sizeable(d) && receives(d, receivers))
         negative |= distribution_coefficient(fit.data(), d.x, d.y, d.z, d.weight) < 0;
   if (fit[0] == 0 || negative) fit = Eigen::Vector4d(1 / A(0, 0), 0, 0, 0);
-  return {fit[0], fit[1], fit[2], fit[3]};
+  return {{fit[0], fit[1], fit[2], fit[3]}, receivers, spans};
 }
 // The fit over the nearest receivers where they span 3D, else over all within two cells.
 inline DistributionFit fit_distribution(const NeighbourPattern& pattern) {
-  bool spans = false;
-  const Fit nearest = fit_over(pattern, Receivers::nearest, spans);
-  if (spans) return {nearest, Receivers::nearest};
-  return {fit_over(pattern, Receivers::within_two_cells, spans), Receivers::within_two_cells};
+  const DistributionFit nearest = fit_over(pattern, Receivers::nearest);
+  return nearest.spans ? nearest : fit_over(pattern, Receivers::within_two_cells);
 }
 
 // Where the memo's distributions live: chunks of 4 MB on large pages (core/large_pages.hpp),

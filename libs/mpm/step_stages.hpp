@@ -233,23 +233,17 @@ void prepare_grid(SolverState& s, StepContext& c) {
     s.needs_sort = false;
   }
   // Bucket boxes hold cell ranges until here; widen them by the stencil's reach.
-  std::vector<uint64_t> keys;
   auto& list = s.buckets.buckets();
-  constexpr int bw = SparseGrid::block_width;
-  for (Bucket& b : list) {
+  for (Bucket& b : list)
     for (int a = 0; a < 3; ++a) {
       b.box_lo[a] += Shape::reach_below;
       b.box_hi[a] += Shape::reach_above;
     }
-    constexpr int e = grid_halo<Shape>;
-    for (int i = floor_div(b.box_lo[0] - e, bw); i <= floor_div(b.box_hi[0] + e, bw); ++i)
-      for (int j = floor_div(b.box_lo[1] - e, bw); j <= floor_div(b.box_hi[1] + e, bw); ++j)
-        for (int k = floor_div(b.box_lo[2] - e, bw); k <= floor_div(b.box_hi[2] + e, bw); ++k)
-          keys.push_back(SparseGrid::block_key(i, j, k));
-  }
   tbb::parallel_for(size_t(0), list.size(), [&](size_t bi) {
     c.columns[bi] = stencil_columns<Shape::reach_below, Shape::reach_above>(c.columns[bi]);
   });
+  std::vector<uint64_t> keys;
+  for (size_t bi = 0; bi < list.size(); ++bi) add_column_blocks<grid_halo<Shape>>(list[bi], c.columns[bi], keys);
   if constexpr (Shape::uses_domain_vertices) add_wide_cpdi_blocks(s, c, keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());

@@ -335,9 +335,8 @@ TEST_CASE("DDMP's distributions are exact for linear fields over the nearest nei
       }
     CHECK(s == d.count);
     CHECK(sum == Approx(1).epsilon(1e-12));
-    bool nearest_span = false, all_span = false;
-    fit_over(pattern, Receivers::nearest, nearest_span);
-    fit_over(pattern, Receivers::within_two_cells, all_span);
+    const bool nearest_span = fit_over(pattern, Receivers::nearest).spans;
+    const bool all_span = fit_over(pattern, Receivers::within_two_cells).spans;
     // The nearest wherever they span; linear exactness wherever the receivers span (a node
     // with mass of its own may instead take the weighted mean, never a negative share).
     CHECK((fit.receivers == Receivers::nearest) == nearest_span);
