@@ -435,7 +435,9 @@ void MpiDomain::share_grid(const SparseGrid& grid, const ParticleBuckets& bucket
             others.clear();
             for (int q = 0; q < size_; ++q)
               if (q != rank_ && holds(q, key)) others.push_back(q);
-            if (others.empty()) continue;
+            // A block of the box that this process does not hold has no node the bucket's
+            // stencils reach (blocks are activated from the node columns, not the box).
+            if (others.empty() || grid.find(bx, by, bz) < 0) continue;
             const int c[3] = {bx, by, bz};
             int lo[3], hi[3];
             for (int a = 0; a < 3; ++a)
