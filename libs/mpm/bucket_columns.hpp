@@ -83,11 +83,11 @@ BucketColumns stencil_columns(const BucketColumns& cells) {
 }
 
 // Adds the keys of the grid blocks that hold a node of the bucket's node columns (its k-ranges,
-// as stencil_columns gives them) or one within `Halo` nodes of such a node. Not the blocks of the bucket's box:
-// thin struts cross a box diagonally, and in T2P30 at the paper's cell the box's blocks are
-// ≈ 1.3 times those the columns reach; every whole-grid pass (the node update, DDMP's
-// smoothing and small-mass passes, the clears) runs over them. A node that no stencil reaches
-// holds zeros and is read by no point, so leaving its block out changes no value.
+// as stencil_columns gives them) or one within `Halo` nodes of such a node. Not the blocks of
+// the bucket's box: thin struts cross a box diagonally, and in T2P30 at the paper's cell the
+// box's blocks are 1.32 times those the columns reach; every whole-grid pass (the node update,
+// DDMP's smoothing and small-mass passes, the clears) runs over them. A node that no stencil
+// reaches holds zeros and is read by no point, so leaving its block out changes no value.
 template <int Halo>
 void add_column_blocks(const Bucket& b, const BucketColumns& columns, std::vector<uint64_t>& keys) {
   constexpr int bw = SparseGrid::block_width, w = BucketColumns::width;
@@ -107,12 +107,14 @@ void add_column_blocks(const Bucket& b, const BucketColumns& columns, std::vecto
       const int k_hi = floor_div(origin[2] + columns.hi[column] + Halo, bw) - first[2];
       for (int bi = floor_div(origin[0] + i - Halo, bw); bi <= floor_div(origin[0] + i + Halo, bw); ++bi)
         for (int bj = floor_div(origin[1] + j - Halo, bw); bj <= floor_div(origin[1] + j + Halo, bw); ++bj)
-          for (int bk = k_lo; bk <= k_hi; ++bk) used[size_t(((bi - first[0]) * span + (bj - first[1])) * span + bk)] = true;
+          for (int bk = k_lo; bk <= k_hi; ++bk)
+            used[size_t(((bi - first[0]) * span + (bj - first[1])) * span + bk)] = true;
     }
   for (int i = 0; i < span; ++i)
     for (int j = 0; j < span; ++j)
       for (int k = 0; k < span; ++k)
-        if (used[size_t((i * span + j) * span + k)]) keys.push_back(SparseGrid::block_key(first[0] + i, first[1] + j, first[2] + k));
+        if (used[size_t((i * span + j) * span + k)])
+          keys.push_back(SparseGrid::block_key(first[0] + i, first[1] + j, first[2] + k));
 }
 
 }  // namespace latmpm::mpm

@@ -85,7 +85,8 @@ void check_column_blocks(std::mt19937& rng) {
             for (int di = -Halo; di <= Halo; ++di)
               for (int dj = -Halo; dj <= Halo; ++dj)
                 for (int dk = -Halo; dk <= Halo; ++dk)
-                  expected.insert(SparseGrid::block_key(floor_div(first[0] + i + di, bw), floor_div(first[1] + j + dj, bw),
+                  expected.insert(SparseGrid::block_key(floor_div(first[0] + i + di, bw),
+                                                        floor_div(first[1] + j + dj, bw),
                                                         floor_div(first[2] + k + dk, bw)));
         }
       std::vector<uint64_t> keys;
