@@ -3,10 +3,12 @@
 // equals the per-particle modified gradient ∇̄S (Eq. 7) it regroups, nodal forces and L̄
 // to round-off; Eq. 8 holds next to the free surfaces (Σ_i f_i = 0,
 // Σ_i x_i ⊗ f_i = −Σ_p V_p σ_p, and a linear velocity field gives its gradient exactly);
-// small-mass nodes hand on their mass, momentum and force without loss. Eq. 8 also with
-// sub-points (shape_ddmp_subpoints.hpp).
+// small-mass nodes hand on their mass, momentum and force without loss, each share as its
+// distribution defines it. Eq. 8 also with sub-points (shape_ddmp_subpoints.hpp).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <random>
@@ -381,4 +383,96 @@ TEST_CASE("DDMP's distributions are exact for linear fields over the nearest nei
   INFO(nearest << " nearest, " << wide << " within two cells");
   CHECK(nearest > 0);
   CHECK(wide > 0);
+}
+
+// The hand-on (move_ddmp_small_mass_lanes) against its definition: every node l that hands on
+// adds C_li times its lanes to each of its receivers i — the sizeable nodes of its pattern
+// among the nearest or all within two cells, its distribution's shares in neighbour_offsets
+// order — and keeps none. On a grid of a lumpy blob, a one-node-thick plate (the weighted
+// mean) and scattered sizeable nodes (fits over all within two cells), with nodes below the
+// small mass inside and massless nodes with force around: the moved lanes equal those of the
+// definition applied node by node, to round-off, for all seven lanes and for the force alone.
+TEST_CASE("DDMP's hand-on gives every receiver the shares its sources' distributions define", "[mpm][ddmp]") {
+  using namespace latmpm::mpm::ddmp_grid_detail;
+  const Real small_mass = 0.1;
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<Real> u(0, 1);
+  SparseGrid grid;
+  std::vector<uint64_t> keys;
+  for (int bx = -1; bx <= 3; ++bx)
+    for (int by = -1; by <= 3; ++by)
+      for (int bz = -1; bz <= 2; ++bz) keys.push_back(SparseGrid::block_key(bx, by, bz));
+  std::sort(keys.begin(), keys.end());
+  grid.set_active_blocks(keys);
+  // Mass: a blob of radius 4–6 nodes around (5, 5, 4), a plate z = 9 for x, y in 1 … 6, and
+  // sizeable nodes at random in 9 … 13 × 1 … 13 × −2 … 8; below the small mass at random within
+  // the blob's outer node; lanes 1–6 random where there is mass, force on every node near it.
+  const auto blob_radius = [](Real x, Real y, Real z) {
+    return 5 + std::sin(x) * std::cos(1.7 * y) + 0.5 * std::sin(2.3 * z);
+  };
+  for (int i = -4; i < 16; ++i)
+    for (int j = -4; j < 16; ++j)
+      for (int k = -4; k < 12; ++k) {
+        Real* node = grid.node(i, j, k);
+        const Vec3 x(i - 5, j - 5, k - 4);
+        const Real r = x.norm(), radius = blob_radius(x[0], x[1], x[2]);
+        Real m = 0;
+        if (r < radius - 1) m = 0.1 + u(rng);
+        else if (r < radius) m = u(rng) < 0.5 ? 0.1 * u(rng) : 0.1 + u(rng);
+        if (k == 9 && i >= 1 && i <= 6 && j >= 1 && j <= 6) m = 0.1 + u(rng);
+        if (i >= 9 && i <= 13 && j >= 1 && j <= 13 && k >= -2 && k <= 8 && u(rng) < 0.3) m = 0.1 + u(rng);
+        node[lane::mass] = m;
+        for (int c = 1; c < 4; ++c) node[c] = m > 0 ? u(rng) - 0.5 : 0;
+        for (int c = 4; c < 7; ++c) node[c] = r < radius + 2 || m > 0 || k >= 8 ? u(rng) - 0.5 : 0;
+      }
+  DdmpNodalValues nv;
+  prepare_ddmp_nodal_values(grid, nv);
+  find_ddmp_small_mass_nodes(grid, small_mass, nv);
+  const auto run = [&](auto first, auto count) {
+    constexpr int First = decltype(first)::value, Count = decltype(count)::value;
+    SparseGrid moved = grid;
+    move_ddmp_small_mass_lanes<First, Count>(moved, nv);
+    // The definition, node by node, on a copy.
+    SparseGrid expected = grid;
+    size_t sources = 0, wide = 0, means = 0, shares = 0;
+    Real scale = 0;
+    for (size_t b = 0; b < grid.block_count(); ++b)
+      for (int n = 0; n < SparseGrid::nodes_per_block; ++n) {
+        const Real* node = grid.block(b) + n * lane::count;
+        for (int c = 0; c < 7; ++c) scale = std::max(scale, std::abs(node[c]));
+        if (!((nv.handing[b] >> n) & 1)) continue;
+        const DdmpDistribution& d = *nv.distributions[b * SparseGrid::nodes_per_block + size_t(n)];
+        const DistributionFit fit = fit_distribution(d.pattern);
+        const bool nearest_only = fit.receivers == Receivers::nearest;
+        const auto at = grid.coord(b);
+        const int l[3] = {at[0] * bw + (n >> 4), at[1] * bw + ((n >> 2) & 3), at[2] * bw + (n & 3)};
+        uint32_t s = 0;
+        for (const Offset& o : neighbour_offsets()) {
+          const bool nearest = std::abs(o.x) + std::abs(o.y) + std::abs(o.z) <= 2;
+          if (!d.pattern.sizeable(o) || (nearest_only && !nearest)) continue;
+          Real* receiver = expected.node(l[0] + o.x, l[1] + o.y, l[2] + o.z);
+          REQUIRE(receiver != nullptr);
+          REQUIRE(receiver[lane::mass] >= small_mass);
+          for (int c = First; c < First + Count; ++c) receiver[c] += d.shares[s] * node[c];
+          ++s;
+        }
+        REQUIRE(s == d.count);
+        Real* source = expected.block(b) + n * lane::count;
+        for (int c = First; c < First + Count; ++c) source[c] = 0;
+        ++sources, shares += s, wide += !nearest_only;
+        means += fit.coefficients[1] == 0 && fit.coefficients[2] == 0 && fit.coefficients[3] == 0;
+      }
+    INFO(sources << " sources, " << shares << " shares, " << wide << " over all within two cells, " << means
+                 << " weighted means");
+    CHECK(sources > 500);
+    CHECK(wide > 20);
+    CHECK(means > 10);
+    Real worst = 0;
+    for (size_t b = 0; b < grid.block_count(); ++b)
+      for (int q = 0; q < SparseGrid::reals_per_block; ++q)
+        worst = std::max(worst, std::abs(moved.block(b)[q] - expected.block(b)[q]));
+    CHECK(worst < 1e-14 * scale * 30);
+  };
+  run(std::integral_constant<int, lane::mass>{}, std::integral_constant<int, 7>{});
+  run(std::integral_constant<int, lane::force>{}, std::integral_constant<int, 3>{});
 }
