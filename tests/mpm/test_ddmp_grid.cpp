@@ -388,10 +388,11 @@ TEST_CASE("DDMP's distributions are exact for linear fields over the nearest nei
 // The hand-on (move_ddmp_small_mass_lanes) against its definition: every node l that hands on
 // adds C_li times its lanes to each of its receivers i — the sizeable nodes of its pattern
 // among the nearest or all within two cells, its distribution's shares in neighbour_offsets
-// order — and keeps none. On a grid of a lumpy blob, a one-node-thick plate (the weighted
-// mean) and scattered sizeable nodes (fits over all within two cells), with nodes below the
-// small mass inside and massless nodes with force around: the moved lanes equal those of the
-// definition applied node by node, to round-off, for all seven lanes and for the force alone.
+// order (their values are the linear-fields test's above) — and keeps none. On a grid of a
+// lumpy blob, a one-node-thick plate (the weighted mean) and scattered sizeable nodes (fits
+// over all within two cells), with nodes below the small mass inside and massless nodes with
+// force around: the moved lanes equal those of the definition applied node by node, to
+// round-off, for all seven lanes and for the force alone.
 TEST_CASE("DDMP's hand-on gives every receiver the shares its sources' distributions define", "[mpm][ddmp]") {
   using namespace latmpm::mpm::ddmp_grid_detail;
   const Real small_mass = 0.1;
@@ -405,8 +406,8 @@ TEST_CASE("DDMP's hand-on gives every receiver the shares its sources' distribut
   std::sort(keys.begin(), keys.end());
   grid.set_active_blocks(keys);
   // Mass: a blob of radius 4–6 nodes around (5, 5, 4), a plate z = 9 for x, y in 1 … 6, and
-  // sizeable nodes at random in 9 … 13 × 1 … 13 × −2 … 8; below the small mass at random within
-  // the blob's outer node; lanes 1–6 random where there is mass, force on every node near it.
+  // sizeable nodes at random in 9 … 13 × 1 … 13 × −2 … 8; below the small mass at random in
+  // the blob's outermost layer; lanes 1–6 random where there is mass, force on every node near it.
   const auto blob_radius = [](Real x, Real y, Real z) {
     return 5 + std::sin(x) * std::cos(1.7 * y) + 0.5 * std::sin(2.3 * z);
   };
@@ -471,6 +472,8 @@ TEST_CASE("DDMP's hand-on gives every receiver the shares its sources' distribut
     for (size_t b = 0; b < grid.block_count(); ++b)
       for (int q = 0; q < SparseGrid::reals_per_block; ++q)
         worst = std::max(worst, std::abs(moved.block(b)[q] - expected.block(b)[q]));
+    // The hand-on adds a receiver's shares in another order than this loop (tile by tile): sums
+    // of at most a few dozen terms no larger than `scale` differ in their last bits only.
     CHECK(worst < 1e-14 * scale * 30);
   };
   run(std::integral_constant<int, lane::mass>{}, std::integral_constant<int, 7>{});
